@@ -1,0 +1,106 @@
+// RBDynamics.h - the physical state of one rigid body, as the seed documents it, and PhysicsType.
+//
+// A plain struct whose public properties a game edits directly (body->getDynamics().velocity += ...). The
+// simulator reads and writes it every step; a collision space only reads it. Both packages need it, so it
+// lives here, header-only.
+//
+// Frames: an unattached body's position, orientation, velocities and momentum are in world space. A body
+// attached to another (attachTo) stores position and orientation relative to its parent's centre of mass
+// and orientation, and moves rigidly with the root of its chain; use getWorldPosition/getWorldOrientation.
+//
+// Validation: the simulator checks every body at the start of a step. A body whose state has become invalid
+// (NaN or Inf anywhere, mass <= 0 or NaN, a scaled or reflected orientation, a non-positive-definite inertia
+// tensor) is reported with error() and restored to its last valid state; the scene goes on.
+#pragma once
+
+#include "MathDeclarations.h"
+#include "ModelSettings.h"
+
+enum PhysicsType {
+    PHYS_Falling,      // moves under forces and gravity (the default)
+    PHYS_Floating,     // moves under forces, feels no gravity
+    PHYS_FixedInSpace, // never moves; collisions between two fixed bodies are never tested
+};
+
+struct RBDynamics {
+    // --- properties (seed names and meanings) ---
+    Vector position;      // current position of the centre of mass (m)
+    Vector velocity;      // current velocity of the centre of mass (m/s)
+    Vector lastVelocity;  // velocity before the last step: helps detect velocity spikes
+    Vector acceleration;  // additive acceleration of the COM (m/s^2), on top of gravity
+    Vector force;         // constant force on the COM (N), applied every step
+    Vector temporalForce; // force applied for the next step only, then reset to zero
+    // Linear acceleration = gravity (PHYS_Falling only) + acceleration + (force + temporalForce) / mass +
+    // drag.
+    float mass = 1.0f; // kg; INFINITE_MASS makes the body immovable by forces and impulses
+    float dragCoefficient =
+        0.0f;                 // quadratic drag: F = -1/2 rho Cd A |v| v, with rho = 1.2 kg/m^3 and A = 1 m^2
+    float restitution = 0.5f; // 1 superball (keeps all energy), 0 clay (keeps none)
+    float friction = 0.25f;   // a contact's coefficient is the sum of both bodies' values (seed rule)
+    Vector com;               // centre-of-mass offset from the body frame's origin, in body-local axes
+    PhysicsType physicsType = PHYS_Falling;
+    Matrix orientation = Matrix(1); // rotation (body local -> world), orthonormal, never scaled
+    Vector angularVelocity;         // rad/s, world axes
+    Vector angularMomentum;         // about the COM, world axes (kg m^2/s)
+    Vector torque;                  // constant torque about the COM (N m), applied every step
+    Vector temporalTorque;          // torque for the next step only, then reset to zero
+    // Angular velocity and momentum are two views of one state (L = I_world w). Write either: before each
+    // step the simulator takes whichever one you changed since its last step (angular velocity wins if both
+    // changed) and recomputes the other.
+
+    RBDynamics();
+    // Copies the physical state. Attachment links are not copied: a copy starts unattached, and assigning
+    // to a body keeps that body's own place in its attachment chain.
+    RBDynamics(const RBDynamics& src);
+    RBDynamics& operator=(const RBDynamics& src);
+    // Detaches from the parent and releases any attached children (they keep their world pose).
+    ~RBDynamics();
+
+    // --- functions ---
+    // REMOVED IN NEXT UPDATE in the seed; kept for ported code: the same as getWorldPosition().
+    Vector getWorldCOM() const;
+    // Velocity of a world point moving with this body (or with the composite it belongs to): v + w x (p - c).
+    Vector getVelocityAtWorldPoint(const Vector& p) const;
+    // Set either tensor (3x3 in the upper-left, body-local axes about the COM); the other is kept consistent.
+    // A tensor that is not finite, symmetric and positive definite is refused with error() and nothing
+    // changes.
+    void setInverseInertiaTensor(const Matrix& i);
+    void setInertiaTensor(const Matrix& i);
+    Matrix& getInertiaTensor();
+    Matrix& getInverseInertiaTensor();
+    const Matrix& getInertiaTensor() const;
+    const Matrix& getInverseInertiaTensor() const;
+    // Instantly changes linear and angular velocity (and momentum) by an impulse (N s) applied at a world
+    // point. On an attached body it acts on the whole composite. Non-finite input is refused with error().
+    void ApplyImpulse(const Vector& impulse, const Vector& pointOfApplication);
+
+    // --- attachment chains ("coming in next update" in the seed) ---
+    // Attaches this body to p, keeping its world pose; nullptr detaches (the body keeps the world velocity it
+    // had as part of the composite). Attaching to itself or a descendant is refused with error().
+    void attachTo(RBDynamics* p);
+    RBDynamics* attachedTo() const;
+    RBDynamics* attachmentRoot() const;
+    // Mass of the whole composite rooted at attachmentRoot() (INFINITE_MASS if any part is infinite).
+    float getMass() const;
+    Vector getWorldPosition() const;    // world position of this body's COM
+    Matrix getWorldOrientation() const; // world orientation of this body
+    // The body frame's origin in world space: getWorldPosition() - com * getWorldOrientation().
+    Vector getWorldOrigin() const;
+    // The inverse inertia tensor in world axes, R^T I^-1 R in row-vector form (this body alone).
+    Matrix getWorldInverseInertiaTensor() const;
+
+    // The first child and the next sibling in the attachment tree (for walking a composite).
+    RBDynamics* firstAttached() const { return m_firstChild; }
+    RBDynamics* nextAttached() const { return m_nextSibling; }
+
+private:
+    Matrix m_inertia;        // body-local, about the COM
+    Matrix m_inverseInertia; // its inverse
+    RBDynamics* m_parent = nullptr;
+    RBDynamics* m_firstChild = nullptr;
+    RBDynamics* m_nextSibling = nullptr;
+
+    void unlinkFromParent();
+};
+
+#include "RBDynamicsDefinitions.h"

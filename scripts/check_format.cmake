@@ -1,0 +1,14 @@
+# Fails when any of our C++ sources differs from what clang-format (with .clang-format) would write.
+# Run as: cmake -DROOT=<repo> -DCLANG_FORMAT=<clang-format> -P scripts/check_format.cmake
+set(dirs Interfaces Physics Collision Framework ReferenceGame tests bench packages)
+set(files "")
+foreach(d ${dirs})
+  file(GLOB_RECURSE found "${ROOT}/${d}/*.h" "${ROOT}/${d}/*.cpp")
+  list(APPEND files ${found})
+endforeach()
+list(FILTER files EXCLUDE REGEX "/fixtures/")
+execute_process(COMMAND ${CLANG_FORMAT} --dry-run --Werror ${files}
+  WORKING_DIRECTORY ${ROOT} RESULT_VARIABLE rc ERROR_VARIABLE err)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "clang-format differences (run scripts/format.sh):\n${err}")
+endif()

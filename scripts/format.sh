@@ -1,0 +1,6 @@
+#!/usr/bin/env bash
+# Rewrites our C++ sources in place with the project's .clang-format.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+find Interfaces Physics Collision Framework ReferenceGame tests bench packages \
+  \( -name '*.h' -o -name '*.cpp' \) -not -path '*/fixtures/*' -print0 | xargs -0 -r clang-format -i
