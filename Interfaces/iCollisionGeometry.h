@@ -2,7 +2,11 @@
 //
 // A geometry takes its pose and velocity from its body's getDynamics(): it is centred on the body frame's
 // origin (getWorldOrigin(), i.e. the COM minus the com offset) and turns with getWorldOrientation().
+// Detection itself uses poses only (a space remembers each geometry's previous pose for continuous
+// sampling); velocities are for whoever resolves the contacts (getVelocityAtWorldPoint).
 // On creation it joins the default collision space (setDefaultCollisionSpace); Delete() leaves its space.
+// A geometry is in at most one space: adding it to a second space moves it there. A geometry bound to a body
+// that is destroyed (rigidBodyDestroyed) is unbound and stops colliding.
 #pragma once
 
 #include "MathDeclarations.h"
@@ -13,6 +17,8 @@ class iCollisionSpace;
 enum CollisionType {
     CT_SPHERE = 1,
     CT_OBB = 2,
+    CT_PLANE = 3,    // iCPlane: one-sided, infinite, static
+    CT_COMPOUND = 4, // iCCompound: several spheres and boxes on one body
 };
 
 class iCollisionGeometry {
@@ -23,7 +29,7 @@ public:
     virtual iRigidBody* getRigidBody() = 0;
     virtual const iRigidBody* getRigidBody() const = 0;
     virtual int getCollisionType() const = 0;
-    // Radius of a sphere about the geometry's centre that contains it.
+    // Radius of a sphere about the geometry's centre that contains it (a plane: infinity).
     virtual float getBoundingRadius() const = 0;
     // The interval the geometry covers along a unit axis, at its current pose.
     virtual void getProjectionBounds(const Vector& axis, float& min, float& max) const = 0;

@@ -1,7 +1,9 @@
 // iCollisionListener.h - a listener for collision events, attached to a rigid body.
 //
-// HitWall is called once per frame for each body a listened-to body is touching. The listener may detach
-// itself, delete geometry or remove bodies during the call: those changes take effect safely.
+// HitWall is called once per populateContactList call for each body a listened-to body is touching, after
+// the contact list is built. The listener may detach itself or other listeners, remove or delete geometry,
+// or delete bodies during the call: those changes take effect safely (a body deleted during the calls gets
+// no further calls; contacts of removed/deleted geometry or dead bodies are dropped from the contact list).
 #pragma once
 
 #include "MathDeclarations.h"
@@ -10,7 +12,8 @@ class iRigidBody;
 
 class iCollisionListener {
 public:
-    // other: the body this listener's body hit; hitNormal: unit, world space, points toward other;
-    // hitLocation: world-space contact point.
+    // other: the body this listener's body hit (nullptr for a plane that has no body); hitNormal: unit,
+    // world space, points toward other; hitLocation: world-space contact point (for several contact points,
+    // their average: the centre of the overlap area).
     virtual void HitWall(iRigidBody* other, Vector hitNormal, Vector hitLocation) = 0;
 };

@@ -7,13 +7,21 @@
 
 #include <cstddef>
 #include <list>
+#include <vector>
 
 #include "MathDeclarations.h"
+#include "iCollisionQueries.h"
 
 class iCollisionGeometry;
 
+// One contact point. Touching shapes give 1 to 4 consecutive contacts with the same g1, g2 and normal (a box
+// face on a box or plane: the corners of the overlap area, whose average is its centre; a compound: one such
+// group per touching child pair). Moving g2 by normal * depth separates the pair (the minimum translation).
+// For a contact found by continuous sampling (see iSimpleCollisionSpace.h) pos, normal and depth describe
+// the first touch along the motion.
 struct CollisionContact {
-    Vector pos;                  // contact position (world space, on the contact surface)
+    Vector pos;                  // contact position (world space, on the contact surface: midway between the
+                                 // two surfaces along the normal)
     Vector normal;               // unit, world space, perpendicular to the contact surface; points at g2
     float depth;                 // penetration depth (>= 0)
     iCollisionGeometry *g1, *g2; // colliding geoms
@@ -25,11 +33,45 @@ public:
     virtual bool add(iCollisionGeometry* o) = 0;
     virtual void remove(iCollisionGeometry* o) = 0;
     virtual const std::list<iCollisionGeometry*>& getAttachedGeometry() = 0;
-    // Collides every attached geometry with each other; clears, then rebuilds the contact list.
-    // delta: seconds since the previous call (0 <= delta <= infinity).
+    // Collides every attached geometry with each other; clears, then rebuilds the contact list, then calls
+    // the bodies' listeners (iCollisionListener.h). delta: seconds since the previous call (0 <= delta <=
+    // infinity); 0 or infinity test the current poses only, otherwise motion since the previous call is
+    // sampled as the space documents.
     virtual void populateContactList(float delta) = 0;
     virtual const CollisionContact* getContactList() const = 0;
     virtual size_t getNumContacts() const = 0;
+
+    // --- extensions (not in the seed; the defaults say "not supported") ---
+    // One id per contact, parallel to getContactList(): which features of the two shapes touch. The same
+    // pair of features touching on the next call gives the same id (with the same g1, g2), so a solver can
+    // match contacts across frames to warm-start them. nullptr when the space does not provide them.
+    virtual const unsigned* getContactFeatureIds() const { return nullptr; }
+    // Closest hit along origin + t * direction, 0 <= t <= maxDistance (direction need not be unit; a zero
+    // direction is refused with error()). True on a hit.
+    virtual bool rayCast(const Vector& origin, const Vector& direction, float maxDistance, RayHit& hit) {
+        (void)origin, (void)direction, (void)maxDistance, (void)hit;
+        return false;
+    }
+    // Overlap queries: clear out, then fill it with every geometry that overlaps the given volume (each
+    // geometry once). Return out.size().
+    virtual size_t overlapSphere(const Vector& centre, float radius, std::vector<iCollisionGeometry*>& out) {
+        (void)centre, (void)radius;
+        out.clear();
+        return 0;
+    }
+    // orientation: row-vector rotation (box local -> world).
+    virtual size_t overlapBox(const Vector& centre, const Matrix& orientation, const Vector& halfExtents,
+                              std::vector<iCollisionGeometry*>& out) {
+        (void)centre, (void)orientation, (void)halfExtents;
+        out.clear();
+        return 0;
+    }
+    virtual size_t overlapAABB(const Vector& min, const Vector& max, std::vector<iCollisionGeometry*>& out) {
+        (void)min, (void)max;
+        out.clear();
+        return 0;
+    }
+
     // termination functions
     virtual void suspend() const = 0;
     virtual void release() const = 0;

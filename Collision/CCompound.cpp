@@ -1,0 +1,106 @@
+// CCompound.cpp - compound geometry (CreateCCompound): spheres and boxes at local offsets on one body.
+#include "CollisionGeometry.h"
+#include "iCCompound.h"
+#include "iUtilities.h"
+
+#include <cmath>
+#include <limits>
+
+namespace {
+
+struct Child {
+    gcol::ShapeKind kind;
+    Vector offset;
+    Matrix rotation = Matrix(1); // child local -> body local (boxes)
+    float radius = 0.0f;
+    Vector half;
+};
+
+class CCompound final : public GeometryImpl<iCCompound> {
+public:
+    iCollisionGeometry* clone() const override {
+        auto* c = new CCompound();
+        c->m_children = m_children;
+        c->bind(const_cast<CCompound*>(this)->body());
+        c->joinDefaultSpace();
+        return c;
+    }
+    int getCollisionType() const override { return CT_COMPOUND; }
+    float getBoundingRadius() const override {
+        float r = 0.0f;
+        for (const Child& c : m_children)
+            r = std::fmax(r, c.offset.length() +
+                                 (c.kind == gcol::ShapeKind::Sphere ? c.radius : c.half.length()));
+        return r;
+    }
+    bool addSphere(const Vector& offset, float radius) override {
+        if (!offset.isFinite() || !(std::isfinite(radius) && radius > 0.0f)) {
+            error(L"iCCompound::addSphere: offset must be finite and radius finite and positive; refused");
+            return false;
+        }
+        Child c;
+        c.kind = gcol::ShapeKind::Sphere;
+        c.offset = offset;
+        c.radius = radius;
+        m_children.push_back(c);
+        return true;
+    }
+    bool addBox(const Vector& offset, const Matrix& rotation, const Vector& h) override {
+        if (!offset.isFinite() || !isRotation(rotation) || !h.isFinite() ||
+            !(h.x > 0 && h.y > 0 && h.z > 0)) {
+            error(L"iCCompound::addBox: needs a finite offset, a proper rotation and positive half extents; "
+                  L"refused");
+            return false;
+        }
+        Child c;
+        c.kind = gcol::ShapeKind::Box;
+        c.offset = offset;
+        c.rotation = rotation.rotation();
+        c.half = h;
+        m_children.push_back(c);
+        return true;
+    }
+    size_t getNumChildren() const override { return m_children.size(); }
+    void clearChildren() override { m_children.clear(); }
+    void worldShapes(const Vector& origin, const Matrix& r,
+                     std::vector<gcol::WorldShape>& out) const override {
+        for (const Child& c : m_children) {
+            gcol::WorldShape s;
+            s.kind = c.kind;
+            Vector centre = origin + r.direction(c.offset);
+            if (c.kind == gcol::ShapeKind::Sphere) {
+                s.sphere.centre = centre;
+                s.sphere.radius = c.radius;
+            } else {
+                Matrix w = c.rotation * r;
+                s.box.centre = centre;
+                s.box.axis[0] = w.direction('x').normalize();
+                s.box.axis[1] = w.direction('y').normalize();
+                s.box.axis[2] = w.direction('z').normalize();
+                s.box.halfExtents = c.half;
+            }
+            out.push_back(s);
+        }
+    }
+    float minDimension() const override {
+        float m = std::numeric_limits<float>::infinity();
+        for (const Child& c : m_children)
+            m = std::fmin(m, c.kind == gcol::ShapeKind::Sphere
+                                 ? 2.0f * c.radius
+                                 : 2.0f * std::fmin(c.half.x, std::fmin(c.half.y, c.half.z)));
+        return m;
+    }
+    void start() { joinDefaultSpace(); }
+
+private:
+    std::vector<Child> m_children;
+};
+
+} // namespace
+
+iCollisionGeometry* CreateCCompound(iRigidBody* rb) {
+    auto* c = new CCompound();
+    c->attach(rb);
+    c->start();
+    return c;
+}

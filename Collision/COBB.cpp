@@ -1,0 +1,62 @@
+// COBB.cpp - the oriented box (CreateCOBB): three half extents about its body frame's origin, turning with
+// the body.
+#include "CollisionGeometry.h"
+#include "iCOBB.h"
+#include "iUtilities.h"
+
+#include <cmath>
+
+namespace {
+
+bool validExtents(const Vector& h) { return h.isFinite() && h.x > 0.0f && h.y > 0.0f && h.z > 0.0f; }
+
+class COBB final : public GeometryImpl<iCOBB> {
+public:
+    explicit COBB(const Vector& h) : m_half(h) {}
+    iCollisionGeometry* clone() const override {
+        auto* c = new COBB(m_half);
+        c->bind(const_cast<COBB*>(this)->body());
+        c->joinDefaultSpace();
+        return c;
+    }
+    int getCollisionType() const override { return CT_OBB; }
+    float getBoundingRadius() const override { return m_half.length(); }
+    Vector getRadius() const override { return m_half; }
+    void setRadius(const Vector& h) override {
+        if (!validExtents(h)) {
+            error(L"iCOBB::setRadius: half extents must be finite and positive; refused");
+            return;
+        }
+        m_half = h;
+    }
+    void worldShapes(const Vector& origin, const Matrix& r,
+                     std::vector<gcol::WorldShape>& out) const override {
+        gcol::WorldShape s;
+        s.kind = gcol::ShapeKind::Box;
+        s.box.centre = origin;
+        // Normalised: the simulator tolerates orientation drift up to 1e-2 before cleaning it.
+        s.box.axis[0] = r.direction('x').normalize();
+        s.box.axis[1] = r.direction('y').normalize();
+        s.box.axis[2] = r.direction('z').normalize();
+        s.box.halfExtents = m_half;
+        out.push_back(s);
+    }
+    float minDimension() const override { return 2.0f * std::fmin(m_half.x, std::fmin(m_half.y, m_half.z)); }
+    void start() { joinDefaultSpace(); }
+
+private:
+    Vector m_half;
+};
+
+} // namespace
+
+iCollisionGeometry* CreateCOBB(iRigidBody* rb, const Vector& radius) {
+    if (!validExtents(radius)) {
+        error(L"CreateCOBB: half extents must be finite and positive; no geometry created");
+        return nullptr;
+    }
+    auto* b = new COBB(radius);
+    b->attach(rb);
+    b->start();
+    return b;
+}

@@ -1,0 +1,54 @@
+// CSphere.cpp - the collision sphere (CreateCSphere): one radius about its body frame's origin.
+#include "CollisionGeometry.h"
+#include "iCSphere.h"
+#include "iUtilities.h"
+
+#include <cmath>
+
+namespace {
+
+class CSphere final : public GeometryImpl<iCSphere> {
+public:
+    explicit CSphere(float radius) : m_radius(radius) {}
+    iCollisionGeometry* clone() const override {
+        auto* c = new CSphere(m_radius);
+        c->bind(const_cast<CSphere*>(this)->body());
+        c->joinDefaultSpace();
+        return c;
+    }
+    int getCollisionType() const override { return CT_SPHERE; }
+    float getBoundingRadius() const override { return m_radius; }
+    float getRadius() const override { return m_radius; }
+    void setRadius(float radius) override {
+        if (!(std::isfinite(radius) && radius > 0.0f)) {
+            error(L"iCSphere::setRadius: radius must be finite and positive; refused");
+            return;
+        }
+        m_radius = radius;
+    }
+    void worldShapes(const Vector& origin, const Matrix&, std::vector<gcol::WorldShape>& out) const override {
+        gcol::WorldShape s;
+        s.kind = gcol::ShapeKind::Sphere;
+        s.sphere.centre = origin;
+        s.sphere.radius = m_radius;
+        out.push_back(s);
+    }
+    float minDimension() const override { return 2.0f * m_radius; }
+    void start() { joinDefaultSpace(); }
+
+private:
+    float m_radius;
+};
+
+} // namespace
+
+iCollisionGeometry* CreateCSphere(iRigidBody* rb, float radius) {
+    if (!(std::isfinite(radius) && radius > 0.0f)) {
+        error(L"CreateCSphere: radius must be finite and positive; no geometry created");
+        return nullptr;
+    }
+    auto* s = new CSphere(radius);
+    s->attach(rb);
+    s->start();
+    return s;
+}

@@ -1,0 +1,41 @@
+// CollisionGeometry.cpp - body binding, the body-lifetime watch and space membership of a geometry.
+#include "CollisionGeometry.h"
+#include "SimpleCollisionSpace.h"
+#include "iRigidBody.h"
+
+CollisionGeometry::CollisionGeometry() { watchRigidBodies(&CollisionGeometry::onBodyDestroyed, this); }
+
+CollisionGeometry::~CollisionGeometry() { unwatchRigidBodies(&CollisionGeometry::onBodyDestroyed, this); }
+
+void CollisionGeometry::onBodyDestroyed(const iRigidBody* dying, void* self) {
+    auto* g = static_cast<CollisionGeometry*>(self);
+    if (g->m_body == dying) g->bind(nullptr);
+}
+
+void CollisionGeometry::joinDefaultSpace() {
+    if (iCollisionSpace* s = getDefaultCollisionSpace()) s->add(asInterface());
+}
+
+bool CollisionGeometry::currentPose(Vector& origin, Matrix& rotation) const {
+    if (!m_body) {
+        origin = Vector();
+        rotation = Matrix(1);
+        return true;
+    }
+    const RBDynamics& d = m_body->getDynamics();
+    Vector o = d.getWorldOrigin();
+    Matrix r = d.getWorldOrientation().rotation();
+    if (!o.isFinite() || !r.isFinite()) return false;
+    origin = o;
+    rotation = r;
+    return true;
+}
+
+void CollisionGeometry::destroy() const {
+    auto* self = const_cast<CollisionGeometry*>(this);
+    if (auto* s = dynamic_cast<SimpleCollisionSpace*>(m_space)) {
+        if (s->deferDelete(self)) return; // the space deletes it once its listeners are done
+    }
+    if (m_space) m_space->remove(self->asInterface());
+    delete this;
+}

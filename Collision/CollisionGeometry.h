@@ -1,0 +1,100 @@
+// CollisionGeometry.h - the base every geometry of this package shares: body binding, space membership,
+// the body-lifetime watch, and the conversion of the body's pose into world-space shapes.
+//
+// CollisionGeometry::setGlobalCollisionSpace is the seed's way to choose the space new geometries join.
+// Spaces talk to a geometry through this class (worldShapes, the per-space bookkeeping); a geometry that
+// does not derive from it cannot be added to this package's spaces.
+#pragma once
+
+#include "Shapes.h"
+#include "iCollisionGeometry.h"
+#include "iCollisionSpace.h"
+
+#include <vector>
+
+class iRigidBody;
+
+class CollisionGeometry {
+public:
+    // Sets the space that geometries created from now on join (nullptr: none).
+    static void setGlobalCollisionSpace(iCollisionSpace* cs) { setDefaultCollisionSpace(cs); }
+    static iCollisionSpace* getGlobalCollisionSpace() { return getDefaultCollisionSpace(); }
+    // The CollisionGeometry behind an interface pointer (nullptr if it is not one of this package's).
+    static CollisionGeometry* from(iCollisionGeometry* g) { return dynamic_cast<CollisionGeometry*>(g); }
+
+    // Appends this geometry's shapes at the body pose (origin, row-vector rotation) to out.
+    virtual void worldShapes(const Vector& origin, const Matrix& rotation,
+                             std::vector<gcol::WorldShape>& out) const = 0;
+    // The smallest dimension (diameter or full box width) of its shapes: the scale for motion sampling.
+    virtual float minDimension() const = 0;
+    virtual iCollisionGeometry* asInterface() = 0;
+    // True for a plane: infinite, and static when it has no body.
+    virtual bool isPlane() const { return false; }
+
+    // The body pose this geometry is at now: false (pose left unset) when the body's dynamics are not
+    // finite. A bodiless geometry is at the world origin.
+    bool currentPose(Vector& origin, Matrix& rotation) const;
+
+    // --- bookkeeping owned by the space the geometry is in ---
+    struct SpaceState {
+        bool hasPrevious = false;   // previous pose valid (continuous sampling)
+        bool reportedBad = false;   // the non-finite pose has been reported once
+        bool pendingDelete = false; // Delete() called during listener notification
+        bool pendingRemove = false; // remove() called during listener notification
+        const iRigidBody* previousBody = nullptr;
+        Vector previousOrigin;
+        Matrix previousRotation = Matrix(1);
+    };
+    SpaceState& spaceState() { return m_state; }
+    void setSpace(iCollisionSpace* s) { m_space = s; }
+    iCollisionSpace* space() const { return m_space; }
+    iRigidBody* body() const { return m_body; }
+    void bind(iRigidBody* rb) {
+        m_body = rb;
+        m_state.hasPrevious = false;
+    }
+
+protected:
+    CollisionGeometry();
+    virtual ~CollisionGeometry();
+    // Joins the default space (called by the factories once the object is complete).
+    void joinDefaultSpace();
+    // Leaves the space (deferred if that space is busy notifying listeners) and deletes this.
+    void destroy() const;
+
+private:
+    friend class SimpleCollisionSpace; // deletes geometry whose Delete() it deferred
+    iRigidBody* m_body = nullptr;
+    iCollisionSpace* m_space = nullptr;
+    SpaceState m_state;
+    static void onBodyDestroyed(const iRigidBody* dying, void* self);
+};
+
+// Implements the iCollisionGeometry functions every concrete geometry shares.
+template <class Interface> class GeometryImpl : public Interface, public CollisionGeometry {
+public:
+    void attach(iRigidBody* rb) override { bind(rb); }
+    iRigidBody* getRigidBody() override { return body(); }
+    const iRigidBody* getRigidBody() const override { return body(); }
+    iCollisionSpace* getSpace() const override { return space(); }
+    void getProjectionBounds(const Vector& axis, float& min, float& max) const override {
+        Vector o;
+        Matrix r(1);
+        min = max = 0.0f;
+        if (!currentPose(o, r)) return;
+        std::vector<gcol::WorldShape> shapes;
+        worldShapes(o, r, shapes);
+        Vector unit = axis.normalize();
+        for (size_t i = 0; i < shapes.size(); ++i) {
+            float lo, hi;
+            gcol::shapeProjection(shapes[i], unit, lo, hi);
+            min = i == 0 ? lo : std::fmin(min, lo);
+            max = i == 0 ? hi : std::fmax(max, hi);
+        }
+    }
+    iCollisionGeometry* asInterface() override { return this; }
+    // Nothing to suspend or release: a geometry holds no device resources.
+    void suspend() const override {}
+    void release() const override {}
+    void Delete() const override { destroy(); }
+};

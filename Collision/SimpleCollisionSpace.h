@@ -1,0 +1,107 @@
+// SimpleCollisionSpace.h - the all-pairs collision space (CreateSimpleCollisionSpace): the reference every
+// faster space is checked against.
+//
+// populateContactList(delta):
+//  1. reads every geometry's pose from its body (a geometry without a body, except a plane, or with a
+//     non-finite pose is skipped; a non-finite pose is reported once with error());
+//  2. finds candidate pairs by sort-and-sweep over world AABBs (swept over the motion since the previous
+//     call when sampling is on); AABBs are conservative, so the pairs tested are a superset of the
+//     overlapping ones and the result equals plain all-pairs;
+//  3. skips pairs on the same body and pairs of two PHYS_FixedInSpace bodies (a bodiless plane is fixed);
+//  4. runs the exact pair test at the current pose, and when nothing touches and the pair moved fast,
+//     the continuous tests (ContinuousPairTest.cpp);
+//  5. notifies listeners (SpaceListeners.cpp).
+// Storage is reused between calls: after warm-up a call does not allocate.
+#pragma once
+
+#include "CollisionGeometry.h"
+#include "Narrowphase.h"
+#include "iCollisionSpace.h"
+
+#include <list>
+#include <vector>
+
+class iRigidBody;
+class iCollisionListener;
+
+class SimpleCollisionSpace final : public iCollisionSpace {
+public:
+    explicit SimpleCollisionSpace(size_t samplesPerSecond);
+
+    // A geometry is in at most one space: adding one that is in another space moves it here. Returns false
+    // when it is already here, is null, or is not a geometry of this package.
+    bool add(iCollisionGeometry* o) override;
+    // During listener notification the removal is deferred until the notifications end.
+    void remove(iCollisionGeometry* o) override;
+    const std::list<iCollisionGeometry*>& getAttachedGeometry() override { return m_geometry; }
+    void populateContactList(float delta) override;
+    const CollisionContact* getContactList() const override {
+        return m_contacts.empty() ? nullptr : m_contacts.data();
+    }
+    size_t getNumContacts() const override { return m_contacts.size(); }
+    const unsigned* getContactFeatureIds() const override {
+        return m_features.empty() ? nullptr : m_features.data();
+    }
+    bool rayCast(const Vector& origin, const Vector& direction, float maxDistance, RayHit& hit) override;
+    size_t overlapSphere(const Vector& centre, float radius, std::vector<iCollisionGeometry*>& out) override;
+    size_t overlapBox(const Vector& centre, const Matrix& orientation, const Vector& halfExtents,
+                      std::vector<iCollisionGeometry*>& out) override;
+    size_t overlapAABB(const Vector& min, const Vector& max, std::vector<iCollisionGeometry*>& out) override;
+    void suspend() const override {}
+    void release() const override {}
+    // Geometries are not deleted: they leave the space (and stay usable). Clears the default space if it
+    // was this one.
+    void Delete() const override;
+
+    // Called by a geometry's Delete(): while listeners are being notified the deletion is queued (true);
+    // otherwise false and the geometry deletes itself.
+    bool deferDelete(CollisionGeometry* g);
+    bool isNotifying() const { return m_notifying; }
+
+    // Per-geometry working state for one populate call.
+    struct Entry {
+        CollisionGeometry* g;
+        iRigidBody* body;
+        bool fixed, plane, moved;
+        Vector origin, prevOrigin;
+        Matrix rotation, prevRotation;
+        float motion;    // upper bound on how far any point of it moved since the previous call
+        float rotAngle;  // rotation since the previous call (radians)
+        float minDim;    // smallest dimension of its shapes
+        int first, last; // its shapes in m_shapes
+        gcol::Aabb box;  // swept over the motion when moved
+    };
+
+private:
+    ~SimpleCollisionSpace();
+    void removeNow(CollisionGeometry* g);
+    bool gatherEntry(CollisionGeometry* g, bool continuous, Entry& e);
+    void testPair(const Entry& a, const Entry& b, float delta);
+    bool testAtPoses(const Entry& a, const Entry& b, float t, unsigned tag);
+    bool sweepSpheres(const Entry& a, const Entry& b);
+    void emit(const Entry& a, const Entry& b, const gcol::ContactManifold& m, unsigned childPair,
+              unsigned tag);
+    void notifyListeners();
+    void finishNotifications();
+    bool queryShapes(iCollisionGeometry* ig, std::vector<gcol::WorldShape>& out);
+
+    size_t m_samplesPerSecond;
+    std::list<iCollisionGeometry*> m_geometry;
+    std::vector<CollisionContact> m_contacts;
+    std::vector<unsigned> m_features;
+    // Scratch reused between calls.
+    std::vector<Entry> m_entries;
+    std::vector<gcol::WorldShape> m_shapes, m_scratchA, m_scratchB;
+    std::vector<int> m_order, m_planes;
+    struct Notice {
+        iCollisionGeometry *g1, *g2;
+        iRigidBody *b1, *b2;
+        Vector normal, pos;
+        int points;
+    };
+    std::vector<Notice> m_notices;
+    std::vector<iCollisionListener*> m_listenerSnapshot;
+    std::vector<CollisionGeometry*> m_pendingRemove, m_pendingDelete;
+    bool m_notifying = false;
+    bool m_populating = false;
+};

@@ -1,0 +1,96 @@
+// SpaceListeners.cpp - HitWall notifications after the contact list is built, and the deferred removals
+// and deletions listeners ask for.
+//
+// Each touching body pair gets one call per populateContactList on each side (the normal points toward
+// `other`, so g1's body gets the contact normal and g2's body its negation). Listeners may detach listeners,
+// remove or delete geometry, or delete bodies during the calls: the listener list is iterated from a
+// snapshot (a listener detached meanwhile is not called), a body whose geometry was unbound (it died) gets
+// no further calls and is not passed as `other`, and geometry removal/deletion waits until the calls end.
+// Then contacts whose geometry was removed or deleted, or whose body changed, are dropped.
+#include "SimpleCollisionSpace.h"
+#include "iCollisionListener.h"
+#include "iRigidBody.h"
+
+#include <algorithm>
+#include <cstdint>
+
+namespace {
+
+bool stillBound(iCollisionGeometry* g, iRigidBody* b) {
+    CollisionGeometry* cg = CollisionGeometry::from(g);
+    const CollisionGeometry::SpaceState& st = cg->spaceState();
+    return cg->body() == b && !st.pendingDelete && !st.pendingRemove;
+}
+
+} // namespace
+
+void SimpleCollisionSpace::notifyListeners() {
+    // One notice per body pair, in the order the pairs were found.
+    m_order.clear();
+    for (int i = 0; i < int(m_notices.size()); ++i) m_order.push_back(i);
+    auto key = [this](int i) {
+        auto x = reinterpret_cast<std::uintptr_t>(m_notices[size_t(i)].b1);
+        auto y = reinterpret_cast<std::uintptr_t>(m_notices[size_t(i)].b2);
+        return std::make_pair(std::min(x, y), std::max(x, y));
+    };
+    std::sort(m_order.begin(), m_order.end(), [&](int a, int b) {
+        auto ka = key(a), kb = key(b);
+        return ka < kb || (ka == kb && a < b);
+    });
+    for (size_t i = 1; i < m_order.size(); ++i)
+        if (key(m_order[i]) == key(m_order[i - 1])) m_notices[size_t(m_order[i])].points = 0; // duplicate
+    m_notifying = true;
+    for (const Notice& n : m_notices) {
+        if (n.points == 0) continue;
+        for (int side = 0; side < 2; ++side) {
+            iRigidBody* self = side == 0 ? n.b1 : n.b2;
+            iRigidBody* other = side == 0 ? n.b2 : n.b1;
+            iCollisionGeometry* selfGeom = side == 0 ? n.g1 : n.g2;
+            iCollisionGeometry* otherGeom = side == 0 ? n.g2 : n.g1;
+            Vector normal = side == 0 ? n.normal : -n.normal;
+            if (!self || !stillBound(selfGeom, self) || !stillBound(otherGeom, other)) continue;
+            m_listenerSnapshot = self->getListeners();
+            for (iCollisionListener* l : m_listenerSnapshot) {
+                if (!stillBound(selfGeom, self) || !stillBound(otherGeom, other)) break;
+                const std::vector<iCollisionListener*>& now = self->getListeners();
+                if (std::find(now.begin(), now.end(), l) == now.end()) continue;
+                l->HitWall(other, normal, n.pos);
+            }
+        }
+    }
+    m_notifying = false;
+    finishNotifications();
+}
+
+void SimpleCollisionSpace::finishNotifications() {
+    if (m_pendingRemove.empty() && m_pendingDelete.empty()) {
+        // Bodies may still have died or been rebound: binding resets hasPrevious, which populate set.
+        bool changed = false;
+        for (const Entry& e : m_entries) changed = changed || !e.g->spaceState().hasPrevious;
+        if (!changed) return;
+    }
+    size_t keep = 0;
+    for (size_t i = 0; i < m_contacts.size(); ++i) {
+        CollisionGeometry* g1 = CollisionGeometry::from(m_contacts[i].g1);
+        CollisionGeometry* g2 = CollisionGeometry::from(m_contacts[i].g2);
+        auto alive = [](CollisionGeometry* g) {
+            const CollisionGeometry::SpaceState& st = g->spaceState();
+            return st.hasPrevious && !st.pendingDelete && !st.pendingRemove;
+        };
+        if (!alive(g1) || !alive(g2)) continue;
+        m_contacts[keep] = m_contacts[i];
+        m_features[keep] = m_features[i];
+        ++keep;
+    }
+    m_contacts.resize(keep);
+    m_features.resize(keep);
+    for (CollisionGeometry* g : m_pendingRemove)
+        if (!g->spaceState().pendingDelete) removeNow(g);
+    m_pendingRemove.clear();
+    std::vector<CollisionGeometry*> doomed;
+    doomed.swap(m_pendingDelete);
+    for (CollisionGeometry* g : doomed) {
+        removeNow(g);
+        delete g;
+    }
+}

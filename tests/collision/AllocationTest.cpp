@@ -1,0 +1,79 @@
+// AllocationTest.cpp - after warm-up, populateContactList does not allocate: the contact list, the working
+// arrays and the listener snapshot keep their storage between calls. Counted by replacing the global
+// operator new in this test program.
+#include "UserBody.h"
+#include "iCOBB.h"
+#include "iCSphere.h"
+#include "iCollisionListener.h"
+#include "iCollisionSpace.h"
+#include "iSimpleCollisionSpace.h"
+
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <cstdlib>
+#include <memory>
+#include <new>
+#include <vector>
+
+namespace {
+std::atomic<long> g_allocations{0};
+}
+
+// The replacement pairs malloc with free on purpose; GCC cannot see that and warns.
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC diagnostic ignored "-Wmismatched-new-delete"
+#endif
+void* operator new(std::size_t n) {
+    ++g_allocations;
+    if (void* p = std::malloc(n ? n : 1)) return p;
+    throw std::bad_alloc();
+}
+void* operator new[](std::size_t n) {
+    ++g_allocations;
+    if (void* p = std::malloc(n ? n : 1)) return p;
+    throw std::bad_alloc();
+}
+void operator delete(void* p) noexcept { std::free(p); }
+void operator delete[](void* p) noexcept { std::free(p); }
+void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+void operator delete[](void* p, std::size_t) noexcept { std::free(p); }
+
+namespace {
+struct Counter final : iCollisionListener {
+    int hits = 0;
+    void HitWall(iRigidBody*, Vector, Vector) override { ++hits; }
+};
+} // namespace
+
+TEST(Allocation, PopulateDoesNotAllocateAfterWarmUp) {
+    iCollisionSpace* space = CreateSimpleCollisionSpace(60);
+    std::vector<std::unique_ptr<UserBody>> bodies;
+    std::vector<iCollisionGeometry*> geoms;
+    Counter counter;
+    for (int i = 0; i < 200; ++i) {
+        bodies.emplace_back(
+            new UserBody(Vector(float(i % 10) * 0.9f, float(i / 10 % 10) * 0.9f, float(i / 100) * 0.9f)));
+        bodies.back()->attachListener(&counter);
+        iCollisionGeometry* g = i % 2 ? CreateCSphere(bodies.back().get(), 0.5f)
+                                      : CreateCOBB(bodies.back().get(), Vector(0.5f, 0.5f, 0.5f));
+        space->add(g);
+        geoms.push_back(g);
+    }
+    // Every body jumps back and forth: the sampled and swept paths run too.
+    auto step = [&](int k) {
+        for (size_t i = 0; i < bodies.size(); ++i)
+            bodies[i]->getDynamics().position.x += (i % 2 ? 0.6f : -0.6f) * (k % 2 ? 1.0f : -1.0f);
+        space->populateContactList(1.0f / 60.0f);
+    };
+    for (int k = 0; k < 4; ++k) step(k);
+    ASSERT_GT(space->getNumContacts(), 0u);
+    long before = g_allocations.load();
+    ASSERT_GT(before, 0) << "the counting operator new is in use";
+    for (int k = 4; k < 14; ++k) step(k);
+    long during = g_allocations.load() - before;
+    EXPECT_EQ(during, 0);
+    EXPECT_GT(counter.hits, 0);
+    for (iCollisionGeometry* g : geoms) g->Delete();
+    space->Delete();
+}
