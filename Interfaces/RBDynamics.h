@@ -7,10 +7,18 @@
 // Frames: an unattached body's position, orientation, velocities and momentum are in world space. A body
 // attached to another (attachTo) stores position and orientation relative to its parent's centre of mass
 // and orientation, and moves rigidly with the root of its chain; use getWorldPosition/getWorldOrientation.
+// A chain is one composite body: the root's velocity is that of the root's own centre of mass, its
+// angularVelocity is the composite's, and its angularMomentum is the composite's about the composite centre
+// of mass (L = I_composite w). An attached body's own velocity and angular fields are not used while it is
+// attached; its force, torque, temporal force/torque, acceleration (times its mass) and drag act on the
+// composite at its own centre of mass. The root's physicsType governs the whole composite.
 //
-// Validation: the simulator checks every body at the start of a step. A body whose state has become invalid
-// (NaN or Inf anywhere, mass <= 0 or NaN, a scaled or reflected orientation, a non-positive-definite inertia
-// tensor) is reported with error() and restored to its last valid state; the scene goes on.
+// Validation: the simulator checks every body at the start of a step and after integrating it. A body whose
+// state has become invalid (NaN or Inf anywhere, mass <= 0 or NaN, negative drag, a scaled, sheared or
+// reflected orientation, a non-positive-definite inertia tensor) is reported with error() and restored to
+// its last valid state; the scene goes on. An orientation within 1e-2 of a rotation (the drift of composing
+// many float rotations) is not an error: it is cleaned with orthoNormalize. Anything further from a rotation
+// (a scale of 2, say) is refused: the simulator never guesses which part of a scaled matrix you meant.
 #pragma once
 
 #include "MathDeclarations.h"
@@ -31,19 +39,30 @@ struct RBDynamics {
     Vector force;         // constant force on the COM (N), applied every step
     Vector temporalForce; // force applied for the next step only, then reset to zero
     // Linear acceleration = gravity (PHYS_Falling only) + acceleration + (force + temporalForce) / mass +
-    // drag.
-    float mass = 1.0f; // kg; INFINITE_MASS makes the body immovable by forces and impulses
-    float dragCoefficient =
-        0.0f;                 // quadratic drag: F = -1/2 rho Cd A |v| v, with rho = 1.2 kg/m^3 and A = 1 m^2
+    // drag / mass.
+    // mass: kg, > 0. INFINITE_MASS makes the body kinematic: forces, torques, gravity, drag and impulses do
+    // not change its motion, but it still moves and turns with the velocity and angular velocity you give it
+    // (a composite with an infinite part turns about its root's centre of mass).
+    float mass = 1.0f;
+    // Quadratic drag F = -1/2 rho Cd A |v| v through the COM, with air density rho = 1.2 kg/m^3 and reference
+    // area A = 1 m^2 (fold a body's real area into Cd). Terminal speed: sqrt(2 m g / (rho Cd A)). >= 0.
+    float dragCoefficient = 0.0f;
     float restitution = 0.5f; // 1 superball (keeps all energy), 0 clay (keeps none)
     float friction = 0.25f;   // a contact's coefficient is the sum of both bodies' values (seed rule)
     Vector com;               // centre-of-mass offset from the body frame's origin, in body-local axes
     PhysicsType physicsType = PHYS_Falling;
+    // Set by the simulator while the body sleeps (at rest, neither integrated nor solved); a game reads it.
+    // Give the body a velocity, a force or a torque, or move it, and it wakes. A collision space skips pairs
+    // of bodies that are each sleeping or fixed, so a resting pile costs next to nothing. Not copied by
+    // operator= (it is the simulator's state, not a property).
+    bool sleeping = false;
     Matrix orientation = Matrix(1); // rotation (body local -> world), orthonormal, never scaled
     Vector angularVelocity;         // rad/s, world axes
     Vector angularMomentum;         // about the COM, world axes (kg m^2/s)
-    Vector torque;                  // constant torque about the COM (N m), applied every step
+    Vector torque;                  // constant torque about the COM (N m), world axes, applied every step
     Vector temporalTorque;          // torque for the next step only, then reset to zero
+    // dL/dt = torque + temporalTorque; w = I_world^-1 L with I_world^-1 = R^T I^-1 R (row vectors), so the
+    // gyroscopic term w x (I w) comes with it.
     // Angular velocity and momentum are two views of one state (L = I_world w). Write either: before each
     // step the simulator takes whichever one you changed since its last step (angular velocity wins if both
     // changed) and recomputes the other.
@@ -82,6 +101,16 @@ struct RBDynamics {
     RBDynamics* attachmentRoot() const;
     // Mass of the whole composite rooted at attachmentRoot() (INFINITE_MASS if any part is infinite).
     float getMass() const;
+    // Mass, centre of mass and inertia (world axes, about that centre) of the composite rooted at
+    // attachmentRoot(), by the parallel-axis theorem. For an unattached body: its own mass, position and
+    // world tensor. inverseInertia is zero when the mass is infinite (nothing can turn it).
+    struct MassProperties {
+        float mass;
+        Vector centre;
+        Matrix inertia;
+        Matrix inverseInertia;
+    };
+    MassProperties getCompositeMassProperties() const;
     Vector getWorldPosition() const;    // world position of this body's COM
     Matrix getWorldOrientation() const; // world orientation of this body
     // The body frame's origin in world space: getWorldPosition() - com * getWorldOrientation().

@@ -1,7 +1,8 @@
 // RBDynamicsDefinitions.h - inline definitions of RBDynamics' functions (included by RBDynamics.h).
 //
 // Header-only because both the simulator and the collision detector read RBDynamics and each package must
-// carry it. Composite (attached) bodies: an attached body's world pose follows its parent chain.
+// carry it. Composite (attached) bodies: an attached body's world pose follows its parent chain, and
+// impulses and getMass act on the whole composite (see RBDynamics.h).
 #pragma once
 
 #include "MathDefinitions.h"
@@ -97,13 +98,60 @@ inline void RBDynamics::ApplyImpulse(const Vector& impulse, const Vector& point)
         error(L"RBDynamics::ApplyImpulse: non-finite impulse or point refused");
         return;
     }
-    RBDynamics* root = const_cast<RBDynamics*>(attachmentRoot());
+    RBDynamics* root = attachmentRoot();
     if (root->physicsType == PHYS_FixedInSpace || !(root->mass < INFINITE_MASS)) return;
-    // Single body: dv = J/m, dL = (p - c) x J, w = I_world^-1 L.
-    // Composite bodies are handled by the simulator's composite properties (see Physics/).
-    root->velocity += impulse * RECIP(root->mass);
-    root->angularMomentum += cross(point - root->position, impulse);
-    root->angularVelocity = root->angularMomentum * root->getWorldInverseInertiaTensor();
+    MassProperties mp = getCompositeMassProperties();
+    if (!(mp.mass < INFINITE_MASS)) return;
+    // The whole composite responds: its centre of mass C gets dV = J/M, its momentum about C gets
+    // dL = (p - C) x J, and w = I_world^-1 L. The root's velocity is that of the root's own centre of mass,
+    // so it also picks up dw x (root - C).
+    Vector dL = cross(point - mp.centre, impulse);
+    Vector dOmega = dL * mp.inverseInertia;
+    root->velocity += impulse * RECIP(mp.mass) + cross(dOmega, root->position - mp.centre);
+    root->angularMomentum += dL;
+    root->angularVelocity = root->angularMomentum * mp.inverseInertia;
+}
+
+inline RBDynamics::MassProperties RBDynamics::getCompositeMassProperties() const {
+    // First pass: mass and centre; second pass: inertia about that centre (parallel-axis theorem), each
+    // part's tensor turned to world axes (R^T I R for row vectors). Iterative depth-first walks, accumulated
+    // in double.
+    const RBDynamics* root = attachmentRoot();
+    MassProperties out{0.0f, Vector(), Matrix(1), Matrix()};
+    double m = 0, cx = 0, cy = 0, cz = 0;
+    bool infinite = false;
+    auto next = [root](const RBDynamics* n) -> const RBDynamics* {
+        if (n->m_firstChild) return n->m_firstChild;
+        while (n && n != root && !n->m_nextSibling) n = n->m_parent;
+        return (n && n != root) ? n->m_nextSibling : nullptr;
+    };
+    for (const RBDynamics* n = root; n; n = next(n)) {
+        if (!(n->mass < INFINITE_MASS)) infinite = true;
+        Vector p = n->getWorldPosition();
+        m += n->mass;
+        cx += double(n->mass) * p.x;
+        cy += double(n->mass) * p.y;
+        cz += double(n->mass) * p.z;
+    }
+    if (infinite || !(m > 0)) {
+        out.mass = infinite ? INFINITE_MASS : float(m);
+        out.centre = root->position;
+        out.inertia = root->getWorldOrientation().transpose() * root->m_inertia * root->getWorldOrientation();
+        out.inverseInertia = Matrix(0);
+        return out;
+    }
+    out.mass = float(m);
+    out.centre = Vector(float(cx / m), float(cy / m), float(cz / m));
+    Eigen::Matrix3d inertia = Eigen::Matrix3d::Zero();
+    for (const RBDynamics* n = root; n; n = next(n)) {
+        gmath::Mat3 r = gmath::block3(n->getWorldOrientation());
+        inertia += (r.transpose() * gmath::block3(n->m_inertia) * r).cast<double>();
+        Eigen::Vector3d d = gmath::map(n->getWorldPosition() - out.centre).cast<double>();
+        inertia += double(n->mass) * (d.squaredNorm() * Eigen::Matrix3d::Identity() - d * d.transpose());
+    }
+    out.inertia = gmath::fromBlock3(inertia.cast<float>());
+    out.inverseInertia = gmath::fromBlock3(inertia.inverse().cast<float>());
+    return out;
 }
 
 // --- attachment chains ---
@@ -160,6 +208,7 @@ inline void RBDynamics::attachTo(RBDynamics* p) {
             return;
         }
     }
+    if (!p && !m_parent) return; // already a root: detaching changes nothing (and must keep a composite's L)
     // World pose and velocity before the change, so that attaching and detaching are seamless.
     Vector worldPos = getWorldPosition();
     Matrix worldRot = getWorldOrientation();
@@ -178,6 +227,6 @@ inline void RBDynamics::attachTo(RBDynamics* p) {
         orientation = worldRot;
         velocity = worldVel;
         angularVelocity = worldOmega;
-        angularMomentum = angularVelocity * getWorldInverseInertiaTensor().inverse();
+        angularMomentum = angularVelocity * getCompositeMassProperties().inertia; // its own subtree, if any
     }
 }

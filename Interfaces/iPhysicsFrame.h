@@ -1,7 +1,12 @@
 // iPhysicsFrame.h - a Frame that owns a rigid body: move it like any frame, and it simulates.
 //
-// The frame's T follows its body after each scene update. The scene deletes bodies on shutdown but not
-// physics frames: the game deletes its PhysicsFrames (which deletes their bodies).
+// The frame's T follows its body after each scene update; moving the frame yourself (translate, rotate...)
+// teleports the body there at the next update (velocities kept). Ownership: the PhysicsFrame owns its body.
+// The scene deletes bodies on shutdown but not physics frames' bodies: deleting the scene first only takes
+// the body out of the scene (the PhysicsFrame keeps working, unsimulated); Delete() on getRB() is refused.
+// The game deletes its PhysicsFrames, which deletes their bodies (safe inside update: deferred).
+// clone() makes a new frame (same T and parent) owning a copy of the body (dynamics, listeners) in the same
+// scene.
 #pragma once
 
 #include "Frame.h"

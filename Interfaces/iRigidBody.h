@@ -14,11 +14,19 @@
 class iFrame;
 class iCollisionListener;
 
+// The simulator's bodies (CreateRigidBody): restore/reset/suspend/release do nothing (a body has no device
+// resources and its scene owns time). clone() copies the dynamics (unattached), listeners and force
+// generators but not the frame binding (two bodies driving one frame would fight), and joins the same scene.
+// Delete() removes the body from its scene; during a scene update (from a fixed updater, force generator or
+// listener) the deletion is deferred to the end of the step and the frame is unbound at once.
 class iRigidBody {
 public:
     // initialization functions
     virtual iRigidBody* clone() const = 0;
-    // Binds a frame whose T follows this body after every scene update; nullptr unbinds.
+    // Binds a frame whose T follows this body after every scene update (it is moved to the body at once);
+    // nullptr unbinds. A frame bound at creation (CreateRigidBody(o)) instead gives the body its pose. The
+    // body writes a rigid T (any scale in the frame is dropped); unbind or delete the body before deleting
+    // the frame.
     virtual void attach(iFrame* o) = 0;
     virtual void attachListener(iCollisionListener* l) = 0;
     virtual void detachListener(const iCollisionListener* l) = 0;

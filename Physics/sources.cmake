@@ -1,4 +1,22 @@
 # The simulator's files, relative to Physics/ (also read by the package generator).
-set(GUARDIAN_PHYSICS_SOURCES)
-set(GUARDIAN_PHYSICS_HEADERS)
+set(GUARDIAN_PHYSICS_SOURCES
+  BodyValidation.cpp
+  Composite.cpp
+  ContactResolution.cpp
+  ContactSolver.cpp
+  Integrators.cpp
+  PhysicsFrame.cpp
+  PhysicsScene.cpp
+  PhysicsSceneContacts.cpp
+  RigidBody.cpp)
+set(GUARDIAN_PHYSICS_HEADERS
+  BodyValidation.h
+  Composite.h
+  ContactManifold.h
+  ContactResolution.h
+  ContactSolver.h
+  Integrators.h
+  MathBridge.h
+  PhysicsScene.h
+  RigidBody.h)
 list(TRANSFORM GUARDIAN_PHYSICS_SOURCES PREPEND ${CMAKE_CURRENT_LIST_DIR}/)

@@ -1,0 +1,16 @@
+// BodyValidation.h - what makes an RBDynamics state valid, in one place (the scene checks every body before
+// and after each step; setDynamics checks what it is handed).
+#pragma once
+
+#include "RBDynamics.h"
+
+namespace physics {
+
+// nullptr when d is valid, else what is wrong (for the error message). Orientation drift within 1e-2 of a
+// rotation is cleaned in place with orthoNormalize (and a stray translation in the orientation's 4th row
+// and column is cleared); further from a rotation is invalid. knownInertia is the inertia tensor last
+// accepted: the expensive positive-definiteness check runs only when the tensor was changed through the
+// non-const getInertiaTensor() reference.
+const wchar_t* checkDynamics(RBDynamics& d, const Matrix& knownInertia, const Matrix& knownInverse);
+
+} // namespace physics

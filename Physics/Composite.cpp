@@ -1,0 +1,87 @@
+// Composite.cpp - mass properties of an attachment chain, gathered once per step before integrating it.
+#include "Composite.h"
+
+#include "RigidBody.h"
+
+namespace physics {
+
+namespace {
+// Air density of the drag law (RBDynamics.h) times the reference area (1 m^2), halved.
+constexpr float HALF_RHO_AREA = 0.5f * 1.2f * 1.0f;
+
+struct Placed {
+    RBDynamics* dyn;
+    Vec3 position; // part COM relative to the root COM, root axes
+    Mat3 rotation; // relative to the root
+};
+} // namespace
+
+void buildComposite(RigidBody* rootBody, const std::unordered_map<const RBDynamics*, RigidBody*>& bodies,
+                    const Vec3& gravity, Composite& out) {
+    RBDynamics* root = &rootBody->getDynamics();
+    out.root = root;
+    out.parts.clear();
+    out.kinematic = false;
+    out.hasGenerators = false;
+    out.gravity = root->physicsType == PHYS_Falling ? gravity : Vec3::Zero();
+
+    // Place every part relative to the root: a child stores its pose relative to its parent's COM and
+    // orientation, p_world = R_parent p + P_parent (column form), so the same recursion holds in root axes.
+    thread_local std::vector<Placed> stack, placed;
+    stack.clear();
+    placed.clear();
+    stack.push_back({root, Vec3::Zero(), Mat3::Identity()});
+    while (!stack.empty()) {
+        Placed p = stack.back();
+        stack.pop_back();
+        placed.push_back(p);
+        for (RBDynamics* c = p.dyn->firstAttached(); c; c = c->nextAttached())
+            stack.push_back(
+                {c, p.rotation * toEigen(c->position) + p.position, p.rotation * toRotation(c->orientation)});
+    }
+
+    double mass = 0;
+    Eigen::Vector3d weighted = Eigen::Vector3d::Zero();
+    for (const Placed& p : placed) {
+        if (!(p.dyn->mass < INFINITE_MASS)) out.kinematic = true;
+        mass += p.dyn->mass;
+        weighted += double(p.dyn->mass) * p.position.cast<double>();
+    }
+    Vec3 centre = out.kinematic ? Vec3::Zero() : Vec3((weighted / mass).cast<float>());
+    out.mass = out.kinematic ? INFINITE_MASS : float(mass);
+    out.invMass = out.kinematic ? 0.0f : float(1.0 / mass);
+    out.rootOffset = -centre;
+
+    if (placed.size() == 1) { // an unattached body: its own tensors, no parallel-axis sum
+        out.inertia = tensor(root->getInertiaTensor());
+        out.invInertia = tensor(root->getInverseInertiaTensor());
+    } else {
+        Eigen::Matrix3d inertia = Eigen::Matrix3d::Zero();
+        for (const Placed& p : placed) {
+            Mat3 own = p.rotation * tensor(p.dyn->getInertiaTensor()) * p.rotation.transpose();
+            Eigen::Vector3d d = (p.position - centre).cast<double>();
+            inertia += own.cast<double>();
+            if (!out.kinematic)
+                inertia +=
+                    double(p.dyn->mass) * (d.squaredNorm() * Eigen::Matrix3d::Identity() - d * d.transpose());
+        }
+        out.inertia = inertia.cast<float>();
+        out.invInertia = inertia.inverse().cast<float>();
+    }
+
+    for (const Placed& p : placed) {
+        RBDynamics& d = *p.dyn;
+        RigidBody* body = rootBody;
+        if (p.dyn != root) {
+            auto found = bodies.find(p.dyn);
+            body = found == bodies.end() ? nullptr : found->second;
+        }
+        if (body && !body->generators().empty()) out.hasGenerators = true;
+        Vec3 force = toEigen(d.force + d.temporalForce);
+        if (d.mass < INFINITE_MASS) force += d.mass * toEigen(d.acceleration);
+        out.parts.push_back({body, p.dyn, p.position - centre, p.rotation, force,
+                             toEigen(d.torque + d.temporalTorque), HALF_RHO_AREA * d.dragCoefficient});
+    }
+}
+
+} // namespace physics

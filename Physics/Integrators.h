@@ -1,0 +1,28 @@
+// Integrators.h - advancing one composite body by one fixed step, with the four selectable integrators.
+//
+// All four share one force evaluation, evaluate(), which takes a trial state so that state-dependent forces
+// (drag, force generators) are re-evaluated at every stage: that is what keeps RK4 fourth order and
+// velocity Verlet second order. Costs per step: Euler variants 1 evaluation, Verlet 2, RK4 4.
+#pragma once
+
+#include "Composite.h"
+#include "iPhysicsSettings.h"
+
+namespace physics {
+
+struct Derivative {
+    Vec3 acceleration; // dv/dt of C
+    Vec3 torque;       // dL/dt about C
+    Vec3 omega;        // angular velocity of the state, I_world^-1 L
+};
+
+// Forces of the trial state s at time t (s) into the step: gravity, constant forces, drag and generators.
+Derivative evaluate(const Composite& c, const MotionState& s, float t);
+
+// Advances s by dt. A kinematic composite moves with constant v and w (omega) whatever the integrator.
+void integrate(Integrator which, const Composite& c, MotionState& s, float dt, const Vec3& kinematicOmega);
+
+// q turned by the rotation vector w * dt (exact exponential map, renormalised).
+Quat rotateBy(const Quat& q, const Vec3& omega, float dt);
+
+} // namespace physics

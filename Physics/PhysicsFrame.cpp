@@ -1,0 +1,58 @@
+// PhysicsFrame.cpp - a Frame that owns a RigidBody bound to itself (CreatePhysicsFrame).
+//
+// Ownership: the PhysicsFrame owns its body. The scene never deletes a PhysicsFrame's body: deleting the
+// scene first only takes the body out of it (the frame keeps working, unsimulated), and Delete() on the
+// body itself is refused. PhysicsFrame::Delete deletes the body (deferred to the end of the step when called
+// during an update; the body lets go of the frame at once) and then the frame.
+#include "PhysicsScene.h"
+#include "RigidBody.h"
+#include "iPhysicsFrame.h"
+
+namespace physics {
+
+class PhysicsFrame final : public iPhysicsFrame {
+public:
+    PhysicsFrame() : m_body(new RigidBody(this)) {
+        m_body->setOwner(this);
+        if (PhysicsScene* scene = PhysicsScene::active()) scene->add(m_body);
+    }
+    PhysicsFrame(const PhysicsFrame&) = delete;
+    PhysicsFrame& operator=(const PhysicsFrame&) = delete;
+
+    iRigidBody* getRB() const override { return m_body; }
+    RBDynamics* getDynamics() const override { return &m_body->getDynamics(); }
+
+    // A new frame with the same T and parent, owning a copy of the body (dynamics, listeners, generators)
+    // in the same scene as this one's.
+    iPhysicsFrame* clone() const override {
+        PhysicsFrame* copy = new PhysicsFrame();
+        copy->m_T = m_T;
+        copy->m_parent = m_parent;
+        RigidBody* b = copy->m_body;
+        if (b->scene() != m_body->scene()) {
+            if (b->scene()) b->scene()->remove(b);
+            if (m_body->scene()) m_body->scene()->add(b);
+        }
+        b->getDynamics() = m_body->getDynamics();
+        b->getListeners() = m_body->getListeners();
+        b->generators() = m_body->generators();
+        b->snapshotValid();
+        b->attach(copy); // the frame takes the copied body's pose
+        return copy;
+    }
+    void suspend() const override {}
+    void release() const override {}
+    void Delete() const override {
+        m_body->setOwner(nullptr);
+        m_body->Delete(); // unbinds this frame now, even when the deletion itself is deferred
+        delete this;
+    }
+
+private:
+    ~PhysicsFrame() override = default;
+    RigidBody* m_body;
+};
+
+} // namespace physics
+
+extern "C" iPhysicsFrame* CreatePhysicsFrame() { return new physics::PhysicsFrame(); }

@@ -1,0 +1,394 @@
+// PhysicsScene.cpp - the fixed-step clock, the body list and its lifecycle, and the step itself.
+#include "PhysicsScene.h"
+
+#include "Integrators.h"
+#include "RigidBody.h"
+#include "iCollisionSpace.h"
+#include "iContext.h"
+#include "iFixedUpdater.h"
+#include "iUtilities.h"
+
+#include <algorithm>
+
+namespace physics {
+
+namespace {
+// Scenes alive, in creation order: the last one is the active scene.
+std::vector<PhysicsScene*>& scenes() {
+    static std::vector<PhysicsScene*> all;
+    return all;
+}
+constexpr int MAX_STEP_RATE = 10000;
+} // namespace
+
+PhysicsScene* PhysicsScene::active() { return scenes().empty() ? nullptr : scenes().back(); }
+
+PhysicsScene::PhysicsScene(iContext* c) {
+    if (c) { // unset keys keep the defaults; set but invalid ones are reported and ignored
+        if (c->isSet(GF_PHYS_STEP_RATE)) setStepRate(c->get(GF_PHYS_STEP_RATE));
+        if (c->isSet(GF_PHYS_MAX_STEPS)) setMaxStepsPerUpdate(c->get(GF_PHYS_MAX_STEPS));
+        if (c->isSet(GF_PHYS_INTEGRATOR)) setIntegrator(Integrator(c->get(GF_PHYS_INTEGRATOR)));
+        if (c->isSet(GF_PHYS_GRAVITY)) setGravity(c->get(GF_PHYS_GRAVITY));
+        if (c->isSet(GF_PHYS_SOLVER_ITERATIONS)) setSolverIterations(c->get(GF_PHYS_SOLVER_ITERATIONS));
+    }
+    scenes().push_back(this);
+}
+
+PhysicsScene::~PhysicsScene() {
+    scenes().erase(std::remove(scenes().begin(), scenes().end(), this), scenes().end());
+    // Every body leaves the scene first, so that none calls back into it while being deleted. Bodies owned
+    // by a PhysicsFrame, and bodies being removed, survive: their owners delete them.
+    std::vector<RigidBody*> bodies;
+    bodies.swap(m_bodies);
+    m_byDynamics.clear();
+    for (RigidBody* b : bodies) b->setScene(nullptr);
+    for (RigidBody* b : bodies) {
+        if (b->dying() || (!b->owner() && !b->pendingRemoval))
+            b->destroy();
+        else
+            b->pendingRemoval = false;
+    }
+}
+
+void PhysicsScene::Delete() const {
+    if (m_busy) { // from a callback inside update(): finish the step first
+        m_deleteRequested = true;
+        return;
+    }
+    delete this;
+}
+
+// --- bodies ---
+
+RigidBody* PhysicsScene::sceneBody(const iRigidBody* o) const {
+    RigidBody* b = const_cast<RigidBody*>(dynamic_cast<const RigidBody*>(o));
+    return b && b->scene() == this ? b : nullptr;
+}
+
+bool PhysicsScene::add(iRigidBody* o) {
+    if (!o) {
+        error(L"PhysicsScene::add: nullptr refused");
+        return false;
+    }
+    RigidBody* b = dynamic_cast<RigidBody*>(o);
+    if (!b) {
+        error(
+            L"PhysicsScene::add: only bodies made by CreateRigidBody or CreatePhysicsFrame can be simulated");
+        return false;
+    }
+    if (b->dying()) {
+        error(L"PhysicsScene::add: the body is being deleted");
+        return false;
+    }
+    if (b->scene() == this) {
+        if (b->pendingRemoval) { // removed and re-added within one step: it simply stays
+            b->pendingRemoval = false;
+            return true;
+        }
+        error(L"PhysicsScene::add: the body is already in this scene");
+        return false;
+    }
+    if (b->scene()) {
+        error(L"PhysicsScene::add: the body is in another scene; remove it there first");
+        return false;
+    }
+    m_bodies.push_back(b);
+    m_byDynamics[&b->getDynamics()] = b;
+    b->setScene(this);
+    return true;
+}
+
+void PhysicsScene::remove(const iRigidBody* o) {
+    if (!o) {
+        error(L"PhysicsScene::remove: nullptr refused");
+        return;
+    }
+    RigidBody* b = sceneBody(o);
+    if (!b) {
+        error(L"PhysicsScene::remove: the body is not in this scene");
+        return;
+    }
+    if (b->dying()) return; // already leaving
+    if (m_busy) {
+        b->pendingRemoval = true;
+        return;
+    }
+    forget(b);
+    b->setScene(nullptr);
+}
+
+void PhysicsScene::forget(RigidBody* b) {
+    b->asleep = b->getDynamics().sleeping = false; // out of the scene, nobody would wake it
+    m_bodies.erase(std::remove(m_bodies.begin(), m_bodies.end(), b), m_bodies.end());
+    m_byDynamics.erase(&b->getDynamics());
+    m_deferredDeletes.erase(std::remove(m_deferredDeletes.begin(), m_deferredDeletes.end(), b),
+                            m_deferredDeletes.end());
+}
+
+void PhysicsScene::flushDeferred() {
+    while (!m_deferredDeletes.empty()) {
+        RigidBody* b = m_deferredDeletes.back();
+        b->destroy(); // forget() takes it off m_deferredDeletes
+    }
+    for (size_t i = 0; i < m_bodies.size();) {
+        RigidBody* b = m_bodies[i];
+        if (!b->pendingRemoval) {
+            ++i;
+            continue;
+        }
+        b->pendingRemoval = false;
+        forget(b);
+        b->setScene(nullptr);
+    }
+    m_updaters.erase(std::remove(m_updaters.begin(), m_updaters.end(), nullptr), m_updaters.end());
+}
+
+// --- settings ---
+
+void PhysicsScene::setNewGlobalCollisionSpace(iCollisionSpace* cs) {
+    // The game must call this with nullptr before deleting the space.
+    m_space = cs;
+    setDefaultCollisionSpace(cs);
+}
+
+bool PhysicsScene::setGravity(const Vector& g) {
+    if (!g.isFinite()) {
+        error(L"PhysicsScene::setGravity: non-finite gravity refused");
+        return false;
+    }
+    m_gravity = g;
+    return true;
+}
+
+bool PhysicsScene::setStepRate(int hz) {
+    if (hz < 1 || hz > MAX_STEP_RATE) {
+        error(L"PhysicsScene::setStepRate: the step rate must be 1..10000 steps per second; refused");
+        return false;
+    }
+    m_accumulator = m_accumulator * hz / m_stepRate; // the same leftover time in the new units
+    m_stepRate = hz;
+    return true;
+}
+
+bool PhysicsScene::setMaxStepsPerUpdate(int n) {
+    if (n < 1) {
+        error(L"PhysicsScene::setMaxStepsPerUpdate: at least one step per update is needed; refused");
+        return false;
+    }
+    m_maxSteps = n;
+    return true;
+}
+
+bool PhysicsScene::setIntegrator(Integrator i) {
+    if (i < INTEGRATOR_Default || i >= INTEGRATOR_Count) {
+        error(L"PhysicsScene::setIntegrator: not an Integrator value; refused");
+        return false;
+    }
+    m_integrator = i == INTEGRATOR_Default ? INTEGRATOR_SemiImplicitEuler : i;
+    return true;
+}
+
+bool PhysicsScene::addFixedUpdater(iFixedUpdater* u) {
+    if (!u || std::find(m_updaters.begin(), m_updaters.end(), u) != m_updaters.end()) {
+        error(L"PhysicsScene::addFixedUpdater: nullptr or an updater already added; refused");
+        return false;
+    }
+    m_updaters.push_back(u);
+    return true;
+}
+
+void PhysicsScene::removeFixedUpdater(const iFixedUpdater* u) {
+    auto it = std::find(m_updaters.begin(), m_updaters.end(), u);
+    if (!u || it == m_updaters.end()) return;
+    if (m_busy)
+        *it = nullptr; // the updater loop may be walking the list: compact after the step
+    else
+        m_updaters.erase(it);
+}
+
+bool PhysicsScene::addForceGenerator(iRigidBody* body, iForceGenerator* g) {
+    RigidBody* b = sceneBody(body);
+    if (!b || !g) {
+        error(L"PhysicsScene::addForceGenerator: needs a generator and a body in this scene; refused");
+        return false;
+    }
+    auto& gens = b->generators();
+    if (std::find(gens.begin(), gens.end(), g) == gens.end()) gens.push_back(g);
+    return true;
+}
+
+void PhysicsScene::removeForceGenerator(const iRigidBody* body, const iForceGenerator* g) {
+    if (RigidBody* b = sceneBody(body)) {
+        auto& gens = b->generators();
+        gens.erase(std::remove(gens.begin(), gens.end(), g), gens.end());
+    }
+}
+
+// --- time ---
+
+void PhysicsScene::restore(int now) {
+    m_suspended = false;
+    m_lastNow = now;
+    m_hasTimeBase = true;
+}
+
+void PhysicsScene::reset(int now) {
+    m_lastNow = now;
+    m_hasTimeBase = true;
+    m_accumulator = 0;
+}
+
+void PhysicsScene::update(int now) {
+    if (m_suspended || !m_hasTimeBase || now < m_lastNow) {
+        // Nothing to integrate: suspended, the first update, or the clock went back (re-based, not replayed).
+        m_lastNow = now;
+        m_hasTimeBase = true;
+        if (!m_suspended) writeFrames(float(m_accumulator) / 1000.0f);
+        return;
+    }
+    m_accumulator += (std::int64_t(now) - m_lastNow) * m_stepRate;
+    m_lastNow = now;
+    const float dt = 1.0f / float(m_stepRate);
+    int steps = 0;
+    m_busy = true;
+    while (m_accumulator >= 1000 && steps < m_maxSteps && !m_deleteRequested) {
+        m_accumulator -= 1000;
+        step(dt);
+        ++steps;
+    }
+    m_busy = false;
+    if (m_accumulator >= 1000) { // the catch-up cap: drop the backlog, keep the partial step
+        m_dropped += m_accumulator / 1000;
+        m_accumulator %= 1000;
+    }
+    if (m_deleteRequested) {
+        delete this;
+        return;
+    }
+    writeFrames(float(m_accumulator) / 1000.0f);
+}
+
+void PhysicsScene::writeFrames(float alpha) {
+    for (RigidBody* b : m_bodies)
+        if (!b->dying() && !b->pendingRemoval) b->writeFrame(alpha);
+}
+
+// --- the step ---
+
+void PhysicsScene::step(float dt) {
+    // 1. Game code at the physics rate. It may add, remove or delete bodies: removals wait for step 9.
+    runFixedUpdaters(dt);
+
+    // 2. Take in the game's edits: a moved frame teleports its body; an invalid state is reported and
+    //    replaced by the body's last valid one; a sleeping body the game touched wakes. The pose now is where
+    //    this step's interpolation starts.
+    for (size_t i = 0; i < m_bodies.size(); ++i) {
+        RigidBody* b = m_bodies[i];
+        if (b->dying() || b->pendingRemoval) continue;
+        if (b->asleep && !b->editedWhileAsleep()) {
+            b->recordPreviousPose();
+            continue;
+        }
+        b->asleep = b->getDynamics().sleeping = false; // before the space looks: its pairs are tested again
+        b->adoptFrameEdits();
+        if (b->validate("before a step")) b->snapshotValid(); // the game's valid edits are kept on failure
+        b->recordPreviousPose();
+    }
+
+    // 3. Contacts at the step's starting poses. Listeners hear of them now (HitWall), and may delete things.
+    const CollisionContact* contacts = nullptr;
+    size_t contactCount = 0;
+    if (m_space) {
+        m_space->populateContactList(dt);
+        contacts = m_space->getContactList();
+        contactCount = m_space->getNumContacts();
+    }
+
+    // 4. Islands of touching bodies: a sleeping body touched by an awake one wakes with its island.
+    if (m_sleeping) {
+        m_islands.build(m_bodies, m_byDynamics, contacts, contactCount);
+        m_islands.wakeTouched(m_bodies);
+    }
+
+    // 5. Integrate each awake composite: unattached bodies and attachment roots. Attached bodies ride along.
+    for (size_t i = 0; i < m_bodies.size(); ++i) {
+        RigidBody* b = m_bodies[i];
+        if (b->dying() || b->pendingRemoval || b->asleep || b->getDynamics().attachedTo()) continue;
+        integrateComposite(b, dt);
+    }
+
+    // 6. Resolve contacts: impulses on the velocities the forces produced, the touched bodies advanced from
+    //    the step's start with the solved velocities, then leftover overlap pushed out.
+    if (contactCount > 0) resolveContacts(contacts, contactCount, dt);
+
+    // 7. A step that produced NaN or Inf (absurd forces) is undone; otherwise it is the new valid state.
+    for (size_t i = 0; i < m_bodies.size(); ++i) {
+        RigidBody* b = m_bodies[i];
+        if (b->dying() || b->pendingRemoval || b->asleep) continue;
+        if (b->validate("after a step")) b->snapshotValid();
+        b->recordStepPose();
+    }
+
+    // 8. Islands that rested long enough fall asleep.
+    //    RBDynamics::sleeping tells the collision space which pairs need no test.
+    if (m_sleeping) m_islands.updateSleep(m_bodies, dt);
+    for (RigidBody* b : m_bodies) b->getDynamics().sleeping = b->asleep;
+
+    // 9. Removals and deletions requested during the step.
+    ++m_steps;
+    flushDeferred();
+}
+
+void PhysicsScene::runFixedUpdaters(float dt) {
+    for (size_t i = 0; i < m_updaters.size(); ++i) // by index: an updater may add or remove updaters
+        if (iFixedUpdater* u = m_updaters[i]) u->fixedUpdate(this, dt);
+}
+
+void PhysicsScene::integrateComposite(RigidBody* body, float dt) {
+    RBDynamics& d = body->getDynamics();
+    d.lastVelocity = d.velocity;
+    Composite& c = m_composite;
+    buildComposite(body, m_byDynamics, toEigen(m_gravity), c);
+    if (d.physicsType != PHYS_FixedInSpace) {
+        // The cached quaternion is exact; the matrix is only re-read when the game replaced it.
+        Quat q = d.orientation == body->writtenOrientation ? body->rotation : toQuat(d.orientation);
+        // Angular velocity and momentum are one state: take the one the game changed (w wins if both); if
+        // neither changed but the mass distribution did (attach, detach, new tensor), keep w.
+        bool reshaped =
+            !body->hasComposite || body->compositeMass != c.mass || body->compositeInertia != c.inertia;
+        if (d.angularVelocity != body->writtenOmega || c.kinematic)
+            d.angularMomentum = toVector(worldInertia(c, q) * toEigen(d.angularVelocity));
+        else if (d.angularMomentum != body->writtenMomentum)
+            d.angularVelocity = toVector(worldInverseInertia(c, q) * toEigen(d.angularMomentum));
+        else if (reshaped)
+            d.angularMomentum = toVector(worldInertia(c, q) * toEigen(d.angularVelocity));
+
+        // Root fields -> the composite's state about its centre of mass C, integrate, and back.
+        Vec3 omega = toEigen(d.angularVelocity);
+        Vec3 arm = q * c.rootOffset; // root COM - C, world
+        MotionState s{toEigen(d.position) - arm, toEigen(d.velocity) - omega.cross(arm),
+                      toEigen(d.angularMomentum), q};
+        integrate(m_integrator, c, s, dt, omega);
+        Vec3 omega1 = c.kinematic ? omega : Vec3(worldInverseInertia(c, s.q) * s.L);
+        Vec3 arm1 = s.q * c.rootOffset;
+        d.position = toVector(s.x + arm1);
+        d.velocity = toVector(s.v + omega1.cross(arm1));
+        d.angularVelocity = toVector(omega1);
+        d.angularMomentum = c.kinematic ? toVector(worldInertia(c, s.q) * omega) : toVector(s.L);
+        d.orientation = toOrientation(s.q);
+
+        body->writtenOmega = d.angularVelocity;
+        body->writtenMomentum = d.angularMomentum;
+        body->writtenOrientation = d.orientation;
+        body->rotation = s.q;
+        body->hasComposite = true;
+        body->compositeMass = c.mass;
+        body->compositeInertia = c.inertia;
+    }
+    // temporalForce and temporalTorque act for one step, on every part.
+    for (CompositePart& p : c.parts) p.dyn->temporalForce = p.dyn->temporalTorque = Vector();
+}
+
+} // namespace physics
+
+extern "C" iPhysicsScene* CreatePhysicsScene(iContext* c) { return new physics::PhysicsScene(c); }

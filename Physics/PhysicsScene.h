@@ -1,0 +1,103 @@
+// PhysicsScene.h - the simulator's iPhysicsScene: the body list, the fixed-step clock, the settings, and
+// the one step function (PhysicsScene::step) that reads top to bottom.
+//
+// The active scene (the one CreateRigidBody adds to) is the most recently created scene not yet deleted.
+#pragma once
+
+#include "Composite.h"
+#include "ContactResolution.h"
+#include "ContactSolver.h"
+#include "iPhysicsScene.h"
+
+#include <cstdint>
+#include <unordered_map>
+#include <vector>
+
+namespace physics {
+
+class RigidBody;
+
+class PhysicsScene final : public iPhysicsScene {
+public:
+    explicit PhysicsScene(iContext* c);
+    PhysicsScene(const PhysicsScene&) = delete;
+    PhysicsScene& operator=(const PhysicsScene&) = delete;
+    static PhysicsScene* active();
+
+    // --- iPhysicsScene ---
+    bool add(iRigidBody* o) override;
+    void setNewGlobalCollisionSpace(iCollisionSpace* cs) override;
+    void restore(int now) override;
+    void update(int now) override;
+    void reset(int now) override;
+    void suspend() const override { m_suspended = true; }
+    void release() const override {}
+    void remove(const iRigidBody* o) override;
+    void Delete() const override;
+
+    bool setGravity(const Vector& g) override;
+    Vector getGravity() const override { return m_gravity; }
+    bool setStepRate(int hz) override;
+    int getStepRate() const override { return m_stepRate; }
+    bool setMaxStepsPerUpdate(int n) override;
+    int getMaxStepsPerUpdate() const override { return m_maxSteps; }
+    bool setIntegrator(Integrator i) override;
+    Integrator getIntegrator() const override { return m_integrator; }
+    size_t getBodyCount() const override { return m_bodies.size(); }
+    long long getStepCount() const override { return m_steps; }
+    long long getDroppedStepCount() const override { return m_dropped; }
+    bool addFixedUpdater(iFixedUpdater* u) override;
+    void removeFixedUpdater(const iFixedUpdater* u) override;
+    bool addForceGenerator(iRigidBody* body, iForceGenerator* g) override;
+    void removeForceGenerator(const iRigidBody* body, const iForceGenerator* g) override;
+    bool setSolverIterations(int n) override;
+    int getSolverIterations() const override { return m_solver.settings().velocityIterations; }
+    bool setFrictionRule(CombineRule r) override;
+    bool setRestitutionRule(CombineRule r) override;
+    void setSleepingEnabled(bool on) override;
+    size_t getAwakeBodyCount() const override;
+    float getMaxPenetration() const override { return m_solver.maxPenetrationBefore(); }
+    float getRemainingPenetration() const override { return m_solver.maxPenetrationAfter(); }
+
+    // --- the bodies' side ---
+    bool busy() const { return m_busy; } // inside update(): removals and deletions are deferred
+    void deferDelete(RigidBody* b) { m_deferredDeletes.push_back(b); }
+    void forget(RigidBody* b); // b is being destroyed now: drop every reference to it
+
+private:
+    ~PhysicsScene();
+    void step(float dt);
+    void runFixedUpdaters(float dt);
+    void integrateComposite(RigidBody* root, float dt);
+    void resolveContacts(const CollisionContact* contacts, size_t count, float dt);
+    void flushDeferred();
+    void writeFrames(float alpha);
+    RigidBody* sceneBody(const iRigidBody* o) const; // o if it is one of this scene's bodies, else nullptr
+
+    std::vector<RigidBody*> m_bodies;
+    std::unordered_map<const RBDynamics*, RigidBody*> m_byDynamics;
+    std::vector<RigidBody*> m_deferredDeletes;
+    std::vector<iFixedUpdater*> m_updaters; // nullptr: removed during a step, compacted after it
+    iCollisionSpace* m_space = nullptr;
+
+    Vector m_gravity = Vector(0, -9.81f, 0);
+    int m_stepRate = 60;
+    int m_maxSteps = 8;
+    Integrator m_integrator = INTEGRATOR_SemiImplicitEuler;
+
+    // Time in exact integer units of 1/(1000 * stepRate) s: update adds elapsed ms * stepRate, a step takes
+    // 1000. No float drift, and 1000 ms at 60 Hz is exactly 60 steps.
+    std::int64_t m_accumulator = 0;
+    int m_lastNow = 0;
+    bool m_hasTimeBase = false;
+    mutable bool m_suspended = false;
+    bool m_busy = false;
+    mutable bool m_deleteRequested = false;
+    long long m_steps = 0, m_dropped = 0;
+    Composite m_composite; // scratch, reused so that stepping allocates nothing
+    ContactSolver m_solver;
+    Islands m_islands;
+    bool m_sleeping = true;
+};
+
+} // namespace physics

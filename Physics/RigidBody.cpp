@@ -1,0 +1,183 @@
+// RigidBody.cpp - the simulator's rigid body: frame binding, listeners, lifetime, validation, interpolation.
+#include "RigidBody.h"
+
+#include "BodyValidation.h"
+#include "PhysicsScene.h"
+#include "iFrame.h"
+#include "iUtilities.h"
+
+#include <algorithm>
+#include <string>
+
+namespace physics {
+
+namespace {
+// The rotation of a frame's world transform, scale removed and the homogeneous parts cleared.
+Matrix rotationOf(const Matrix& world) {
+    Matrix r = orthoNormalize(world);
+    r.m41 = r.m42 = r.m43 = 0.0f;
+    return r;
+}
+} // namespace
+
+RigidBody::RigidBody(iFrame* frame) {
+    // A new body starts where its frame is (the game usually positions the frame first).
+    m_frame = frame;
+    if (frame) {
+        Matrix w = frame->world();
+        m_dyn.orientation = rotationOf(w);
+        m_dyn.position = w.position() + m_dyn.orientation.direction(m_dyn.com);
+        m_writtenT = frame->transform();
+    }
+    snapshotValid();
+    recordPreviousPose();
+    recordStepPose();
+}
+
+RigidBody::~RigidBody() {
+    // Collision spaces unbind their geometries from this body before it goes (iRigidBody.h).
+    rigidBodyDestroyed(this);
+    // m_dyn's destructor then releases any bodies attached to this one (they keep their world pose).
+}
+
+iRigidBody* RigidBody::clone() const {
+    // The copy has the same dynamics (unattached: RBDynamics copies never copy links), listeners and force
+    // generators, no frame (two bodies driving one frame would fight), and joins this body's scene.
+    RigidBody* copy = new RigidBody(nullptr);
+    copy->m_dyn = m_dyn;
+    copy->m_listeners = m_listeners;
+    copy->m_generators = m_generators;
+    copy->snapshotValid();
+    copy->recordPreviousPose();
+    copy->recordStepPose();
+    if (m_scene && !m_dying) m_scene->add(copy);
+    return copy;
+}
+
+void RigidBody::attach(iFrame* o) {
+    if (m_dying) return;
+    // The frame follows this body from now on: it is moved to the body's pose at once.
+    m_frame = o;
+    if (o) {
+        m_writtenT = o->transform(); // not a game edit to adopt: the body's pose wins
+        recordPreviousPose();
+        writeFrame(1.0f);
+    }
+}
+
+void RigidBody::attachListener(iCollisionListener* l) {
+    if (!l) {
+        error(L"RigidBody::attachListener: nullptr refused");
+        return;
+    }
+    if (std::find(m_listeners.begin(), m_listeners.end(), l) == m_listeners.end()) m_listeners.push_back(l);
+}
+
+void RigidBody::detachListener(const iCollisionListener* l) {
+    m_listeners.erase(std::remove(m_listeners.begin(), m_listeners.end(), l), m_listeners.end());
+}
+
+void RigidBody::setDynamics(const RBDynamics& d) {
+    RBDynamics candidate(d);
+    if (const wchar_t* why = checkDynamics(candidate, Matrix(), Matrix())) {
+        std::wstring msg = std::wstring(L"RigidBody::setDynamics: refused, ") + why;
+        error(msg.c_str());
+        return;
+    }
+    m_dyn = candidate; // keeps this body's place in its attachment chain
+}
+
+void RigidBody::Delete() const {
+    RigidBody* self = const_cast<RigidBody*>(this);
+    if (m_dying) return; // already queued
+    if (m_owner) {
+        error(L"RigidBody::Delete: this body belongs to a PhysicsFrame; delete the PhysicsFrame instead");
+        return;
+    }
+    if (m_scene && m_scene->busy()) {
+        // Inside a step (a fixed updater, a force generator, a listener): the step still walks the body
+        // list, so only mark it; the scene deletes it when the step ends. The frame is unbound now because
+        // the game may delete the frame right after this call.
+        self->m_dying = true;
+        self->m_frame = nullptr;
+        m_scene->deferDelete(self);
+        return;
+    }
+    self->destroy();
+}
+
+void RigidBody::destroy() {
+    if (m_scene) m_scene->forget(this);
+    delete this;
+}
+
+void RigidBody::adoptFrameEdits() {
+    if (!m_frame || m_dyn.attachedTo() || m_frame->transform() == m_writtenT) return;
+    Matrix w = m_frame->world();
+    m_dyn.orientation = rotationOf(w);
+    m_dyn.position = w.position() + m_dyn.orientation.direction(m_dyn.com);
+    m_writtenT = m_frame->transform();
+    recordPreviousPose(); // a teleport: nothing to interpolate across
+}
+
+bool RigidBody::validate(const char* when) {
+    const wchar_t* why =
+        checkDynamics(m_dyn, m_lastValid.getInertiaTensor(), m_lastValid.getInverseInertiaTensor());
+    if (!why) return true;
+    std::wstring msg = L"PhysicsScene: invalid rigid body state ";
+    for (const char* c = when; *c; ++c) msg += wchar_t(*c);
+    msg += L" (";
+    msg += why;
+    msg += L"); the body is restored to its last valid state";
+    error(msg.c_str());
+    m_dyn = m_lastValid; // operator= keeps the attachment links
+    return false;
+}
+
+void RigidBody::recordPreviousPose() {
+    m_prevPosition = m_dyn.getWorldPosition();
+    m_prevRotation = toQuat(m_dyn.getWorldOrientation());
+}
+
+void RigidBody::recordStepPose() {
+    m_stepPosition = m_dyn.getWorldPosition();
+    m_stepOrientation = m_dyn.getWorldOrientation();
+}
+
+bool RigidBody::editedWhileAsleep() const {
+    const Vector zero;
+    const RBDynamics& d = m_dyn;
+    return d.velocity != zero || d.angularVelocity != zero || d.angularMomentum != zero || d.force != zero ||
+           d.temporalForce != zero || d.acceleration != zero || d.torque != zero ||
+           d.temporalTorque != zero || d.getWorldPosition() != m_stepPosition ||
+           d.getWorldOrientation() != m_stepOrientation;
+}
+
+void RigidBody::writeFrame(float alpha) {
+    if (!m_frame) return;
+    adoptFrameEdits();
+    // The game moved the body (its dynamics) since the last step: show it there, do not smear towards it.
+    if (m_dyn.getWorldPosition() != m_stepPosition || m_dyn.getWorldOrientation() != m_stepOrientation) {
+        recordPreviousPose();
+        recordStepPose();
+    }
+    // Drawn pose = previous step's pose blended towards the current one: position lerp, orientation slerp.
+    Vector cur = m_dyn.getWorldPosition();
+    Quat q = m_prevRotation.slerp(alpha, toQuat(m_dyn.getWorldOrientation()));
+    Vector p = m_prevPosition + (cur - m_prevPosition) * alpha;
+    Matrix t = toOrientation(q.normalized());
+    Vector origin = p - t.direction(m_dyn.com);
+    t.m41 = origin.x;
+    t.m42 = origin.y;
+    t.m43 = origin.z;
+    m_frame->setWorldTransform(t);
+    m_writtenT = m_frame->transform();
+}
+
+} // namespace physics
+
+extern "C" iRigidBody* CreateRigidBody(iFrame* o) {
+    physics::RigidBody* body = new physics::RigidBody(o);
+    if (physics::PhysicsScene* scene = physics::PhysicsScene::active()) scene->add(body);
+    return body;
+}

@@ -1,0 +1,105 @@
+// RigidBody.h - the simulator's iRigidBody: an RBDynamics, the frame it drives, its listeners, and the
+// per-body bookkeeping the scene needs between steps (last valid state, interpolation poses, what the scene
+// last wrote, so that a game's edits can be told from the simulator's).
+//
+// Ownership: made by CreateRigidBody (or a PhysicsFrame), gone with Delete(). Delete() during a scene update
+// only marks the body dying and unbinds its frame; the scene deletes it at the end of the step.
+#pragma once
+
+#include "MathBridge.h"
+#include "RBDynamics.h"
+#include "iRigidBody.h"
+
+#include <vector>
+
+class iFrame;
+class iForceGenerator;
+class iPhysicsFrame;
+
+namespace physics {
+
+class PhysicsScene;
+
+class RigidBody final : public iRigidBody {
+public:
+    explicit RigidBody(iFrame* frame);
+    RigidBody(const RigidBody&) = delete;
+    RigidBody& operator=(const RigidBody&) = delete;
+
+    // --- iRigidBody ---
+    iRigidBody* clone() const override;
+    void attach(iFrame* o) override;
+    void attachListener(iCollisionListener* l) override;
+    void detachListener(const iCollisionListener* l) override;
+    void restore(int) override {}
+    std::vector<iCollisionListener*>& getListeners() override { return m_listeners; }
+    iFrame* getFrame() override { return m_frame; }
+    RBDynamics& getDynamics() override { return m_dyn; }
+    const RBDynamics& getDynamics() const override { return m_dyn; }
+    void setDynamics(const RBDynamics& d) override;
+    void reset(int) override {}
+    void suspend() const override {}
+    void release() const override {}
+    void Delete() const override;
+
+    // --- the scene's side ---
+    PhysicsScene* scene() const { return m_scene; }
+    void setScene(PhysicsScene* s) { m_scene = s; }
+    iPhysicsFrame* owner() const { return m_owner; }
+    void setOwner(iPhysicsFrame* f) { m_owner = f; }
+    bool dying() const { return m_dying; }
+    // Deletes now (the scene calls it when flushing deferred deletions, or Delete() outside a step).
+    void destroy();
+    std::vector<iForceGenerator*>& generators() { return m_generators; }
+
+    // Takes the pose of the bound frame if the game moved the frame since the scene last wrote it (a
+    // teleport: velocities are kept, no interpolation across it). Unattached bodies only.
+    void adoptFrameEdits();
+    // Checks the state (cleaning float drift in the orientation); an invalid body is reported with error()
+    // and restored to its last valid state. Returns false when it had to restore.
+    bool validate(const char* when);
+    void snapshotValid() { m_lastValid = m_dyn; }
+    // Interpolation: the pose at the start of the step, and the frame write after the steps.
+    void recordPreviousPose();
+    void recordStepPose(); // the pose a step ended with (an edit after it is a teleport)
+    void writeFrame(float alpha);
+    bool pendingRemoval = false; // remove() during a step: skipped now, removed when the step ends
+    // The world pose (COM, rotation) at the start of the current step.
+    const Vector& previousPosition() const { return m_prevPosition; }
+    const Quat& previousRotation() const { return m_prevRotation; }
+
+    // Sleeping: a body (island) at rest for a while stops being integrated until something wakes it.
+    bool asleep = false;
+    float restTime = 0; // seconds spent below the sleep speeds
+    // True when the game touched a sleeping body's state since its last step: a velocity, a force or
+    // torque, or a new pose. Such a body wakes.
+    bool editedWhileAsleep() const;
+
+    // Angular bookkeeping of a root, written after each step: a differing field is a game edit.
+    Vector writtenOmega, writtenMomentum;
+    Matrix writtenOrientation = Matrix(1);
+    Quat rotation = Quat::Identity(); // the exact quaternion behind writtenOrientation
+    // Composite mass properties of the last step (a change means attach/detach or new inertia: keep w).
+    bool hasComposite = false;
+    float compositeMass = 0;
+    Mat3 compositeInertia = Mat3::Zero();
+
+private:
+    ~RigidBody();
+    void bindFrame(iFrame* o);
+
+    RBDynamics m_dyn;
+    RBDynamics m_lastValid;
+    iFrame* m_frame = nullptr;
+    Matrix m_writtenT;
+    std::vector<iCollisionListener*> m_listeners;
+    std::vector<iForceGenerator*> m_generators;
+    PhysicsScene* m_scene = nullptr;
+    iPhysicsFrame* m_owner = nullptr;
+    bool m_dying = false;
+    Vector m_prevPosition, m_stepPosition;
+    Quat m_prevRotation = Quat::Identity();
+    Matrix m_stepOrientation = Matrix(1);
+};
+
+} // namespace physics

@@ -1,0 +1,55 @@
+// PhysicsTestSupport.h - shared helpers of the simulator tests: a scene that deletes itself, a quiet error
+// recorder, and running the scene for a given time in fixed-size frames.
+#pragma once
+
+#include "RBDynamics.h"
+#include "iPhysicsScene.h"
+#include "iRigidBody.h"
+#include "iUtilities.h"
+
+#include <string>
+
+namespace physics_test {
+
+// Records refused input instead of printing it.
+struct ErrorRecorder {
+    static std::wstring& last() {
+        static std::wstring s;
+        return s;
+    }
+    static void handler(const wchar_t* m) { last() = m; }
+    ErrorRecorder() : m_previous(setErrorHandler(&handler)), m_start(errorCount()) { last().clear(); }
+    ~ErrorRecorder() { setErrorHandler(m_previous); }
+    ErrorRecorder(const ErrorRecorder&) = delete;
+    ErrorRecorder& operator=(const ErrorRecorder&) = delete;
+    unsigned long count() const { return errorCount() - m_start; }
+
+private:
+    ErrorHandler m_previous;
+    unsigned long m_start;
+};
+
+// A scene for one test: created with the given rate and integrator, deleted (with its bodies) at the end.
+struct SceneHolder {
+    iPhysicsScene* scene;
+    int now = 0;
+    explicit SceneHolder(int hz = 60, Integrator integrator = INTEGRATOR_Default)
+        : scene(CreatePhysicsScene(nullptr)) {
+        scene->setStepRate(hz);
+        scene->setIntegrator(integrator);
+        scene->update(now); // sets the time base
+    }
+    ~SceneHolder() { scene->Delete(); }
+    SceneHolder(const SceneHolder&) = delete;
+    SceneHolder& operator=(const SceneHolder&) = delete;
+    // Advances by ms in frames of frameMs (the last one shorter), like an engine loop.
+    void run(int ms, int frameMs = 10) {
+        int end = now + ms;
+        while (now < end) {
+            now = now + frameMs < end ? now + frameMs : end;
+            scene->update(now);
+        }
+    }
+};
+
+} // namespace physics_test
