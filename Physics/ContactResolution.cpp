@@ -1,0 +1,148 @@
+// ContactResolution.cpp - scene bodies in and out of the contact solver, and islands for sleeping.
+#include "ContactResolution.h"
+
+#include "Integrators.h"
+#include "RigidBody.h"
+#include "iCollisionGeometry.h"
+#include "iCollisionSpace.h"
+
+namespace physics {
+
+SolverBody SceneBodyAccess::load(RBDynamics* root) const {
+    if (!root) return SolverBodyAccess::load(nullptr); // the static world
+    SolverBody b;
+    b.root = root;
+    b.com = toEigen(root->position);
+    b.v = toEigen(root->velocity);
+    b.w = toEigen(root->angularVelocity);
+    auto it = m_bodies.find(root);
+    RigidBody* body = it == m_bodies.end() ? nullptr : it->second;
+    if (body && body->asleep) b.v = b.w = Vec3::Zero();
+    if (!body || body->asleep || body->dying() || body->pendingRemoval ||
+        root->physicsType == PHYS_FixedInSpace)
+        return b; // immovable here: not ours to move, or at rest
+    buildComposite(body, m_bodies, m_gravity, m_scratch);
+    if (m_scratch.kinematic) return b;
+    // The contacts were found at the step's starting pose, so lever arms are measured from the centre of
+    // mass there (measuring from the integrated pose skews every torque by v dt and pumps energy into
+    // rocking stacks). Velocities are converted at the integrated pose, where they were written.
+    Quat q0 = body->previousRotation();
+    b.com = toEigen(body->previousPosition()) - q0 * m_scratch.rootOffset;
+    b.v -= b.w.cross(toQuat(root->orientation) * m_scratch.rootOffset);
+    b.invMass = m_scratch.invMass;
+    b.invInertia = worldInverseInertia(m_scratch, q0);
+    m_mass[root] = Mass{body, m_scratch.rootOffset, m_scratch.inertia};
+    return b;
+}
+
+bool SceneBodyAccess::alive(const RBDynamics* root) const {
+    if (!root) return true;
+    auto it = m_bodies.find(root);
+    return it != m_bodies.end() && !it->second->dying() && !it->second->pendingRemoval;
+}
+
+void SceneBodyAccess::storeVelocity(const SolverBody& b) const {
+    if (!b.root || b.invMass == 0.0f) return;
+    const Mass& m = m_mass.at(b.root);
+    Mat3 r = toRotation(b.root->orientation);
+    Vec3 arm = r * m.rootOffset;
+    b.root->angularVelocity = toVector(b.w);
+    b.root->velocity = toVector(b.v + b.w.cross(arm));
+    b.root->angularMomentum = toVector(r * m.inertia * r.transpose() * b.w);
+}
+
+void SceneBodyAccess::advancePoses(const std::vector<SolverBody>& bodies, float dt) const {
+    for (const SolverBody& b : bodies) {
+        if (!b.root || b.invMass == 0.0f) continue;
+        const Mass& m = m_mass.at(b.root);
+        Quat q0 = m.body->previousRotation();
+        Vec3 centre0 = toEigen(m.body->previousPosition()) - q0 * m.rootOffset;
+        Quat q1 = rotateBy(q0, b.w, dt);
+        Vec3 centre1 = centre0 + b.v * dt;
+        b.root->position = toVector(centre1 + q1 * m.rootOffset);
+        b.root->orientation = toOrientation(q1);
+        const_cast<SolverBody&>(b).com = centre1;
+    }
+}
+
+void SceneBodyAccess::acceptWrites(const std::vector<SolverBody>& bodies) const {
+    for (const SolverBody& b : bodies) {
+        if (!b.root || b.invMass == 0.0f) continue;
+        RigidBody* body = m_mass.at(b.root).body;
+        body->writtenOmega = b.root->angularVelocity;
+        body->writtenMomentum = b.root->angularMomentum;
+        body->writtenOrientation = b.root->orientation;
+        body->rotation = toQuat(b.root->orientation);
+    }
+}
+
+// --- islands ---
+
+int Islands::find(int i) const {
+    while (m_parent[i] != i) i = m_parent[i] = m_parent[m_parent[i]];
+    return i;
+}
+
+void Islands::build(const std::vector<RigidBody*>& bodies, const SceneBodyAccess::BodyMap& byDynamics,
+                    const CollisionContact* contacts, size_t count) {
+    m_index.clear();
+    m_parent.clear();
+    for (RigidBody* b : bodies) {
+        if (b->getDynamics().attachedTo() || b->getDynamics().physicsType == PHYS_FixedInSpace) continue;
+        m_index.emplace(b, int(m_parent.size()));
+        m_parent.push_back(int(m_parent.size()));
+    }
+    auto islandOf = [&](iCollisionGeometry* g) -> int {
+        iRigidBody* rb = g ? g->getRigidBody() : nullptr;
+        if (!rb) return -1;
+        auto body = byDynamics.find(rb->getDynamics().attachmentRoot());
+        if (body == byDynamics.end()) return -1;
+        auto index = m_index.find(body->second);
+        return index == m_index.end() ? -1 : index->second;
+    };
+    for (size_t i = 0; contacts && i < count; ++i) {
+        int a = islandOf(contacts[i].g1), b = islandOf(contacts[i].g2);
+        if (a < 0 || b < 0) continue;
+        a = find(a);
+        b = find(b);
+        if (a != b) m_parent[std::max(a, b)] = std::min(a, b); // the lower index leads: order, not addresses
+    }
+}
+
+void Islands::wakeTouched(const std::vector<RigidBody*>& bodies) const {
+    std::vector<char> awake(m_parent.size(), 0);
+    for (RigidBody* b : bodies) {
+        auto it = m_index.find(b);
+        if (it != m_index.end() && !b->asleep) awake[find(it->second)] = 1;
+    }
+    for (RigidBody* b : bodies) {
+        auto it = m_index.find(b);
+        if (it != m_index.end() && b->asleep && awake[find(it->second)]) {
+            b->asleep = false;
+            b->restTime = 0;
+        }
+    }
+}
+
+void Islands::updateSleep(const std::vector<RigidBody*>& bodies, float dt) {
+    std::vector<float> leastRest(m_parent.size(), kTimeToSleep * 2);
+    for (RigidBody* b : bodies) {
+        auto it = m_index.find(b);
+        if (it == m_index.end() || b->asleep) continue;
+        const RBDynamics& d = b->getDynamics();
+        bool resting = d.velocity.length() < kSleepSpeed && d.angularVelocity.length() < kSleepSpeed;
+        b->restTime = resting ? b->restTime + dt : 0.0f;
+        float& least = leastRest[find(it->second)];
+        least = std::min(least, b->restTime);
+    }
+    for (RigidBody* b : bodies) {
+        auto it = m_index.find(b);
+        if (it == m_index.end() || b->asleep || leastRest[find(it->second)] < kTimeToSleep) continue;
+        RBDynamics& d = b->getDynamics();
+        b->asleep = true;
+        d.velocity = d.angularVelocity = d.angularMomentum = Vector();
+        b->writtenOmega = b->writtenMomentum = Vector();
+    }
+}
+
+} // namespace physics

@@ -1,0 +1,69 @@
+// ContactResolution.h - the scene's side of contact resolution: how its bodies enter the solver, how poses
+// are advanced with solved velocities, and the islands that decide who sleeps.
+//
+// Bodies enter the solver as composites (an attachment chain is one body about its combined centre of mass).
+// A body this scene does not simulate (another owner's, a sleeping one) enters as immovable, keeping its
+// velocity, so a game-animated body still pushes. After the velocity solve, a body the solver moved is
+// advanced from the step's starting pose with its solved velocities (semi-implicit Euler for that step,
+// whatever the integrator), so it never moves into what it touches.
+#pragma once
+
+#include "Composite.h"
+#include "ContactSolver.h"
+
+#include <unordered_map>
+#include <vector>
+
+struct CollisionContact;
+
+namespace physics {
+
+class RigidBody;
+
+class SceneBodyAccess final : public SolverBodyAccess {
+public:
+    using BodyMap = std::unordered_map<const RBDynamics*, RigidBody*>;
+    SceneBodyAccess(const BodyMap& bodies, const Vec3& gravity) : m_bodies(bodies), m_gravity(gravity) {}
+
+    SolverBody load(RBDynamics* root) const override;
+    void storeVelocity(const SolverBody& b) const override;
+    bool alive(const RBDynamics* root) const override;
+    // Advances each movable solver body from its step-start pose with its solved velocities.
+    void advancePoses(const std::vector<SolverBody>& bodies, float dt) const;
+    // Records the solver's writes as the simulator's own, so the next step does not take them for edits.
+    void acceptWrites(const std::vector<SolverBody>& bodies) const;
+
+private:
+    struct Mass {
+        RigidBody* body;
+        Vec3 rootOffset; // root COM - composite COM, root axes
+        Mat3 inertia;    // local, about the composite COM
+    };
+    const BodyMap& m_bodies;
+    Vec3 m_gravity;
+    mutable std::unordered_map<const RBDynamics*, Mass> m_mass;
+    mutable Composite m_scratch;
+};
+
+// Union-find over the scene's bodies, joined by this step's contacts: the islands that sleep and wake
+// together. Built in body order, so the result does not depend on addresses.
+class Islands {
+public:
+    void build(const std::vector<RigidBody*>& bodies, const SceneBodyAccess::BodyMap& byDynamics,
+               const CollisionContact* contacts, size_t count);
+    // Wakes every sleeping body that shares an island with an awake movable body.
+    void wakeTouched(const std::vector<RigidBody*>& bodies) const;
+    // Adds dt of rest to bodies below the sleep speeds; an island whose bodies all rested long enough sleeps.
+    // (resolveContacts zeroes the rest time of a body still being pushed out of an overlap.)
+    void updateSleep(const std::vector<RigidBody*>& bodies, float dt);
+
+    static constexpr float kSleepSpeed = 0.05f; // m/s and rad/s
+    static constexpr float kTimeToSleep = 0.5f; // s
+
+private:
+    int find(int i) const;
+    std::unordered_map<const RigidBody*, int> m_index;
+    mutable std::vector<int> m_parent;
+};
+
+} // namespace physics

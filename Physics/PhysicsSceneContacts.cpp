@@ -1,0 +1,74 @@
+// PhysicsSceneContacts.cpp - the scene's contact resolution step and its solver and sleeping settings.
+#include "PhysicsScene.h"
+
+#include "RigidBody.h"
+#include "iUtilities.h"
+
+namespace physics {
+
+void PhysicsScene::resolveContacts(const CollisionContact* contacts, size_t count, float dt) {
+    SceneBodyAccess access(m_byDynamics, toEigen(m_gravity));
+    m_solver.solveVelocities(contacts, count, dt, access);
+    access.advancePoses(m_solver.bodies(), dt);
+    m_solver.correctPositions(access);
+    access.acceptWrites(m_solver.bodies());
+    // A body still being pushed out of an overlap is not at rest, however slowly it moves: it must not
+    // fall asleep with the overlap frozen in.
+    for (const SolverBody& b : m_solver.bodies()) {
+        auto it = b.settling && b.root ? m_byDynamics.find(b.root) : m_byDynamics.end();
+        if (it != m_byDynamics.end()) it->second->restTime = 0;
+    }
+}
+
+bool PhysicsScene::setSolverIterations(int n) {
+    if (n < 1 || n > 1000) {
+        error(L"PhysicsScene::setSolverIterations: iterations must be 1..1000; unchanged");
+        return false;
+    }
+    SolverSettings s = m_solver.settings();
+    s.velocityIterations = n;
+    m_solver.setSettings(s);
+    return true;
+}
+
+static bool validRule(CombineRule r) { return r >= COMBINE_Sum && r <= COMBINE_GeometricMean; }
+
+bool PhysicsScene::setFrictionRule(CombineRule r) {
+    if (!validRule(r)) {
+        error(L"PhysicsScene::setFrictionRule: unknown rule; unchanged");
+        return false;
+    }
+    SolverSettings s = m_solver.settings();
+    s.friction = r;
+    m_solver.setSettings(s);
+    return true;
+}
+
+bool PhysicsScene::setRestitutionRule(CombineRule r) {
+    if (!validRule(r)) {
+        error(L"PhysicsScene::setRestitutionRule: unknown rule; unchanged");
+        return false;
+    }
+    SolverSettings s = m_solver.settings();
+    s.restitution = r;
+    m_solver.setSettings(s);
+    return true;
+}
+
+void PhysicsScene::setSleepingEnabled(bool on) {
+    m_sleeping = on;
+    if (!on)
+        for (RigidBody* b : m_bodies) {
+            b->asleep = b->getDynamics().sleeping = false;
+            b->restTime = 0;
+        }
+}
+
+size_t PhysicsScene::getAwakeBodyCount() const {
+    size_t awake = 0;
+    for (const RigidBody* b : m_bodies)
+        if (!b->asleep && b->getDynamics().physicsType != PHYS_FixedInSpace) ++awake;
+    return awake;
+}
+
+} // namespace physics

@@ -1,0 +1,67 @@
+// SceneFixture.h - a physics scene with a World, advanced by whole 60 Hz steps through update(now).
+#pragma once
+
+#include "MathDefinitions.h"
+#include "World.h"
+#include "iPhysicsFrame.h"
+#include "iPhysicsScene.h"
+#include "iRigidBody.h"
+
+#include <cmath>
+#include <cstring>
+#include <functional>
+
+namespace resolution_test {
+
+constexpr float kG = 9.81f;
+constexpr float kDt = 1.0f / 60.0f;
+
+class SceneFixture {
+public:
+    explicit SceneFixture(int iterations = 10) {
+        scene = CreatePhysicsScene(nullptr);
+        scene->setSolverIterations(iterations);
+        scene->update(0); // the first update sets the time base
+        world = new World(scene);
+    }
+    ~SceneFixture() {
+        delete world;
+        scene->Delete();
+    }
+    SceneFixture(const SceneFixture&) = delete;
+    SceneFixture& operator=(const SceneFixture&) = delete;
+
+    // Advances exactly n fixed steps (engine time in whole milliseconds, rounded up past each step).
+    void steps(int n, const std::function<void()>& afterEach = nullptr) {
+        for (int i = 0; i < n; ++i) {
+            ++m_steps;
+            scene->update(int(std::ceil(m_steps * 1000.0 / 60.0)));
+            if (afterEach) afterEach();
+        }
+    }
+    void seconds(float s, const std::function<void()>& afterEach = nullptr) {
+        steps(int(s * 60 + 0.5f), afterEach);
+    }
+
+    // FNV-1a over the bits of every body's position and orientation.
+    unsigned long long stateHash() const {
+        unsigned long long h = 1469598103934665603ull;
+        auto mix = [&h](const void* p, size_t n) {
+            const unsigned char* b = static_cast<const unsigned char*>(p);
+            for (size_t i = 0; i < n; ++i) h = (h ^ b[i]) * 1099511628211ull;
+        };
+        for (const iPhysicsFrame* f : world->bodies()) {
+            mix(&f->getDynamics()->position, sizeof(Vector));
+            mix(f->getDynamics()->orientation.data(), 16 * sizeof(float));
+        }
+        return h;
+    }
+
+    iPhysicsScene* scene;
+    World* world;
+
+private:
+    long m_steps = 0;
+};
+
+} // namespace resolution_test
