@@ -120,7 +120,9 @@ bool SimpleCollisionSpace::gatherEntry(CollisionGeometry* g, bool continuous, En
         return false;
     }
     st.reportedBad = false;
-    e.fixed = !e.body || e.body->getDynamics().attachmentRoot()->physicsType == PHYS_FixedInSpace;
+    // Fixed and sleeping bodies do not move: a pair of two of them needs no test.
+    const RBDynamics* root = e.body ? e.body->getDynamics().attachmentRoot() : nullptr;
+    e.fixed = !root || root->physicsType == PHYS_FixedInSpace || root->sleeping;
     e.first = int(m_shapes.size());
     g->worldShapes(e.origin, e.rotation, m_shapes);
     e.last = int(m_shapes.size());

@@ -7,7 +7,8 @@
 //  2. finds candidate pairs by sort-and-sweep over world AABBs (swept over the motion since the previous
 //     call when sampling is on); AABBs are conservative, so the pairs tested are a superset of the
 //     overlapping ones and the result equals plain all-pairs;
-//  3. skips pairs on the same body and pairs of two PHYS_FixedInSpace bodies (a bodiless plane is fixed);
+//  3. skips pairs on the same body and pairs of two bodies that are each PHYS_FixedInSpace or sleeping
+//     (RBDynamics::sleeping; a bodiless plane is fixed);
 //  4. runs the exact pair test at the current pose, and when nothing touches and the pair moved fast,
 //     the continuous tests (ContinuousPairTest.cpp);
 //  5. notifies listeners (SpaceListeners.cpp).

@@ -112,6 +112,31 @@ TEST_F(SpaceTest, FiltersFixedPairsSameBodyAndBodiless) {
     for (iCollisionGeometry* g : {a, b, c, d, e}) g->Delete();
 }
 
+TEST_F(SpaceTest, PairsOfSleepingOrFixedBodiesAreNotTestedButAnAwakeBodyStillTouchesThem) {
+    // Two overlapping sleeping spheres resting on a fixed box: no pair among them is tested. An awake sphere
+    // overlapping one of them is.
+    UserBody ground(Vector(0, -1, 0), PHYS_FixedInSpace), s1(Vector(0, 0.4f, 0)), s2(Vector(0.8f, 0.4f, 0));
+    UserBody awake(Vector(-0.8f, 0.4f, 0));
+    s1.getDynamics().sleeping = s2.getDynamics().sleeping = true;
+    iCollisionGeometry* g = CreateCOBB(&ground, Vector(5, 1, 5));
+    iCollisionGeometry* a = CreateCSphere(&s1, 0.5f);
+    iCollisionGeometry* b = CreateCSphere(&s2, 0.5f);
+    space->populateContactList(0);
+    EXPECT_EQ(space->getNumContacts(), 0u);
+    iCollisionGeometry* c = CreateCSphere(&awake, 0.5f);
+    space->populateContactList(0);
+    // The awake sphere touches the floor and s1; nothing else is tested.
+    ASSERT_EQ(space->getNumContacts(), 2u);
+    for (size_t i = 0; i < space->getNumContacts(); ++i) {
+        const CollisionContact& k = space->getContactList()[i];
+        EXPECT_TRUE(k.g1 == c || k.g2 == c);
+    }
+    s2.getDynamics().sleeping = false; // woken: its floor contact and its contact with s1 come back
+    space->populateContactList(0);
+    EXPECT_EQ(space->getNumContacts(), 4u);
+    for (iCollisionGeometry* x : {g, a, b, c}) x->Delete();
+}
+
 TEST_F(SpaceTest, TwoSpacesNeverSeeEachOthersContacts) {
     iCollisionSpace* other = CreateSimpleCollisionSpace(120);
     UserBody a(Vector(0, 0, 0)), b(Vector(0.5f, 0, 0)), c(Vector(0, 0.2f, 0)), d(Vector(0.4f, 0.2f, 0));
