@@ -1,27 +1,67 @@
-// main.cpp - the reference game's entry point: a headless run of the course engine loop.
+// main.cpp - the reference game, headless: the course engine loop (physicsScene->update(now), then
+// design->update(now)) on a stepped 16 ms clock, for one named scene or all of them.
 //
-// Usage: ReferenceGame [--scene NAME] [--frames N]
-// Until the simulator and the collision detector land there is no scene to run: it says so and exits 0.
+// Usage: ReferenceGame [--scene NAME|all] [--frames N] [--list]
+// Exit status: 0 when every scene held together, 1 when one blew up (NaN, energy growth, deep penetration),
+// 2 on bad arguments.
+#include "GameDesign.h"
+#include "Scenes.h"
+#include "iClock.h"
+#include "iContext.h"
+#include "iEngine.h"
+#include "iPhysicsScene.h"
+
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <string>
 
+namespace {
+
+int usage() {
+    std::fprintf(stderr, "usage: ReferenceGame [--scene NAME|all] [--frames N] [--list]\n");
+    return 2;
+}
+
+bool runScene(const SceneSpec& spec, int frames) {
+    iContext* context = CreateContext();
+    iPhysicsScene* scene = CreatePhysicsScene(context); // the course Engine makes it in its constructor
+    GameDesign* design = new GameDesign(scene, spec, frames);
+    iEngine* engine = CreateEngine(context, design, scene, CreateSteppedClock(16));
+    engine->setup();
+    engine->run(frames);
+    bool ok = design->failure() == nullptr;
+    engine->Delete(); // deletes the design, then the scene
+    context->Delete();
+    return ok;
+}
+
+} // namespace
+
 int main(int argc, char** argv) {
-    std::string scene = "none";
+    std::string name = "pyramid";
     int frames = 600;
     for (int i = 1; i < argc; ++i) {
-        if (!std::strcmp(argv[i], "--scene") && i + 1 < argc)
-            scene = argv[++i];
-        else if (!std::strcmp(argv[i], "--frames") && i + 1 < argc)
+        if (!std::strcmp(argv[i], "--scene") && i + 1 < argc) {
+            name = argv[++i];
+        } else if (!std::strcmp(argv[i], "--frames") && i + 1 < argc) {
             frames = std::atoi(argv[++i]);
-        else {
-            std::fprintf(stderr, "usage: ReferenceGame [--scene NAME] [--frames N]\n");
-            return 2;
+            if (frames <= 0) return usage();
+        } else if (!std::strcmp(argv[i], "--list")) {
+            for (const SceneSpec& s : allScenes()) std::printf("%-10s %s\n", s.name, s.description);
+            return 0;
+        } else {
+            return usage();
         }
     }
-    std::printf("ReferenceGame: scene '%s', %d frames requested: no scene exists yet (the simulator has not "
-                "landed)\n",
-                scene.c_str(), frames);
-    return 0;
+    bool ok = true;
+    if (name == "all") {
+        for (const SceneSpec& s : allScenes()) ok = runScene(s, frames) && ok;
+    } else if (const SceneSpec* s = findScene(name)) {
+        ok = runScene(*s, frames);
+    } else {
+        std::fprintf(stderr, "no scene '%s' (try --list)\n", name.c_str());
+        return 2;
+    }
+    return ok ? 0 : 1;
 }

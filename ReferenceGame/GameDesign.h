@@ -1,0 +1,42 @@
+// GameDesign.h - the reference game's Design: builds a named scene, counts hits with a listener, prints a
+// per-second summary, and judges whether the scene blew up.
+#pragma once
+
+#include "Scenes.h"
+#include "iDesign.h"
+
+#include <chrono>
+
+class World;
+class iPhysicsScene;
+
+class GameDesign final : public iDesign {
+public:
+    GameDesign(iPhysicsScene* scene, const SceneSpec& spec, int frames);
+    void initialize(int now) override;
+    void update(int now) override;
+    void reset(int) override {}
+    void restore(int) override {}
+    void suspend() override {}
+    void release() override {}
+    bool finished() const override { return m_frame >= m_frames || m_failure; }
+    void Delete() const override { delete this; }
+
+    // Why the scene failed, or nullptr when it held together.
+    const char* failure() const { return m_failure; }
+
+private:
+    ~GameDesign();
+    void summarise(int now);
+
+    iPhysicsScene* m_scene;
+    const SceneSpec& m_spec;
+    World* m_world = nullptr;
+    struct HitCounter* m_hits = nullptr;
+    int m_frames, m_frame = 0, m_start = 0, m_lastSecond = 0;
+    float m_energyBudget = 0; // the mechanical energy the scene may have: initial plus what shots inject
+    float m_worstPenetration = 0;
+    const char* m_failure = nullptr;
+    std::chrono::steady_clock::time_point m_wallStart;
+    int m_framesThisSecond = 0;
+};

@@ -1,0 +1,103 @@
+// World.cpp - building and measuring a demo scene through the public API only.
+#include "World.h"
+
+#include "MathDefinitions.h"
+#include "RBDynamics.h"
+#include "iCOBB.h"
+#include "iCPlane.h"
+#include "iCSphere.h"
+#include "iCollisionSpace.h"
+#include "iPhysicsFrame.h"
+#include "iPhysicsScene.h"
+#include "iRigidBody.h"
+#include "iSimpleCollisionSpace.h"
+
+#include <algorithm>
+#include <cmath>
+
+World::World(iPhysicsScene* scene) : m_scene(scene), m_space(CreateSimpleCollisionSpace()) {
+    m_scene->setNewGlobalCollisionSpace(m_space);
+}
+
+World::~World() {
+    for (iCollisionGeometry* g : m_shapes) g->Delete();
+    for (iPhysicsFrame* f : m_bodies) f->Delete();
+    m_scene->setNewGlobalCollisionSpace(nullptr);
+    m_space->Delete();
+}
+
+iPhysicsFrame* World::box(const Vector& centre, const Vector& half, float mass, const Matrix& orientation) {
+    iPhysicsFrame* f = CreatePhysicsFrame();
+    RBDynamics* d = f->getDynamics();
+    d->position = centre;
+    d->orientation = orientation;
+    d->mass = mass;
+    d->setInertiaTensor(getBoxInertiaTensor(mass, half));
+    m_shapes.push_back(CreateCOBB(f->getRB(), half));
+    m_bodies.push_back(f);
+    return f;
+}
+
+iPhysicsFrame* World::sphere(const Vector& centre, float radius, float mass) {
+    iPhysicsFrame* f = CreatePhysicsFrame();
+    RBDynamics* d = f->getDynamics();
+    d->position = centre;
+    d->mass = mass;
+    d->setInertiaTensor(getSphereInertiaTensor(mass, radius));
+    m_shapes.push_back(CreateCSphere(f->getRB(), radius));
+    m_bodies.push_back(f);
+    return f;
+}
+
+iPhysicsFrame* World::fixedBox(const Vector& centre, const Vector& half) {
+    iPhysicsFrame* f = box(centre, half, 1.0f);
+    f->getDynamics()->physicsType = PHYS_FixedInSpace;
+    return f;
+}
+
+void World::ground(float y) { m_shapes.push_back(CreateCPlane(nullptr, Vector(0, 1, 0), y)); }
+
+float World::kineticEnergy() const {
+    float e = 0;
+    for (const iPhysicsFrame* f : m_bodies) {
+        const RBDynamics* d = f->getDynamics();
+        if (d->physicsType == PHYS_FixedInSpace || !(d->mass < INFINITE_MASS)) continue;
+        e +=
+            0.5f * d->mass * d->velocity.lengthSquared() + 0.5f * dot(d->angularVelocity, d->angularMomentum);
+    }
+    return e;
+}
+
+float World::mechanicalEnergy() const {
+    float e = kineticEnergy();
+    Vector g = m_scene->getGravity();
+    for (const iPhysicsFrame* f : m_bodies) {
+        const RBDynamics* d = f->getDynamics();
+        if (d->physicsType != PHYS_Falling || !(d->mass < INFINITE_MASS)) continue;
+        e -= d->mass * dot(g, d->position);
+    }
+    return e;
+}
+
+float World::maxPenetration() const {
+    float deepest = 0;
+    const CollisionContact* c = m_space->getContactList();
+    for (size_t i = 0; i < m_space->getNumContacts(); ++i) deepest = std::max(deepest, c[i].depth);
+    return deepest;
+}
+
+bool World::allFinite() const {
+    for (const iPhysicsFrame* f : m_bodies) {
+        const RBDynamics* d = f->getDynamics();
+        if (!d->position.isFinite() || !d->velocity.isFinite() || !d->angularVelocity.isFinite() ||
+            !d->orientation.isFinite())
+            return false;
+    }
+    return true;
+}
+
+float World::deepestBelow(float y) const {
+    float below = 0;
+    for (const iPhysicsFrame* f : m_bodies) below = std::max(below, y - f->getDynamics()->position.y);
+    return below;
+}

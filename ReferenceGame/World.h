@@ -1,0 +1,47 @@
+// World.h - what one demo scene owns: a collision space handed to the physics scene, and the bodies and
+// shapes built in it. The reference game, the tests and the benchmarks build their scenes with it, so each
+// scene is written once.
+#pragma once
+
+#include "MathDeclarations.h"
+
+#include <vector>
+
+class iPhysicsScene;
+class iPhysicsFrame;
+class iCollisionSpace;
+class iCollisionGeometry;
+
+class World {
+public:
+    // Creates a simple collision space and makes it the scene's (and the default for new geometry).
+    explicit World(iPhysicsScene* scene);
+    World(const World&) = delete;
+    World& operator=(const World&) = delete;
+    // Deletes every shape and body it built and its space (the physics scene stays).
+    ~World();
+
+    iPhysicsFrame* box(const Vector& centre, const Vector& halfExtents, float mass,
+                       const Matrix& orientation = Matrix(1));
+    iPhysicsFrame* sphere(const Vector& centre, float radius, float mass);
+    iPhysicsFrame* fixedBox(const Vector& centre, const Vector& halfExtents);
+    // A world-space floor: a one-sided plane at height y, no body.
+    void ground(float y = 0.0f);
+
+    iPhysicsScene* scene() const { return m_scene; }
+    iCollisionSpace* space() const { return m_space; }
+    const std::vector<iPhysicsFrame*>& bodies() const { return m_bodies; }
+
+    // Measurements over the moving bodies.
+    float kineticEnergy() const;       // translational + rotational, J
+    float mechanicalEnergy() const;    // kinetic + potential against the scene's gravity, J
+    float maxPenetration() const;      // deepest contact in the space's current list, m
+    bool allFinite() const;            // no NaN or Inf in any body's state
+    float deepestBelow(float y) const; // how far the lowest body centre is below y (0 when none is)
+
+private:
+    iPhysicsScene* m_scene;
+    iCollisionSpace* m_space;
+    std::vector<iPhysicsFrame*> m_bodies;
+    std::vector<iCollisionGeometry*> m_shapes;
+};
