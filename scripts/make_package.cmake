@@ -1,0 +1,27 @@
+# Writes one drop-in package as a folder and a .tar.gz archive.
+# Run as: cmake -DROOT=<repo> -DNAME=<package> -DOUT=<dir> -P scripts/make_package.cmake
+# The folder holds the package's files in their repository folders (Interfaces/, Physics/, Collision/),
+# MANIFEST.txt (one file a line) and INTEGRATION.md (from packages/<name>/).
+cmake_minimum_required(VERSION 3.20)
+include(${ROOT}/packages/packages.cmake)
+include(${ROOT}/scripts/package_files.cmake)
+if(NOT DEFINED GUARDIAN_PACKAGE_${NAME}_MODULES)
+  message(FATAL_ERROR "unknown package '${NAME}' (known: ${GUARDIAN_PACKAGES})")
+endif()
+guardian_package_files(files "${ROOT}" ${GUARDIAN_PACKAGE_${NAME}_MODULES})
+set(dest "${OUT}/${NAME}")
+file(REMOVE_RECURSE "${dest}")
+foreach(f ${files})
+  get_filename_component(sub "${f}" DIRECTORY)
+  file(COPY "${ROOT}/${f}" DESTINATION "${dest}/${sub}")
+endforeach()
+list(JOIN files "\n" manifest)
+file(WRITE "${dest}/MANIFEST.txt" "${manifest}\n")
+file(COPY "${ROOT}/packages/${NAME}/INTEGRATION.md" DESTINATION "${dest}")
+execute_process(COMMAND ${CMAKE_COMMAND} -E tar czf "${OUT}/${NAME}.tar.gz" "${NAME}"
+  WORKING_DIRECTORY "${OUT}" RESULT_VARIABLE rc)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "could not write ${OUT}/${NAME}.tar.gz")
+endif()
+list(LENGTH files count)
+message(STATUS "package ${NAME}: ${count} files -> ${dest} and ${NAME}.tar.gz")
