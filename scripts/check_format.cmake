@@ -1,5 +1,6 @@
 # Fails when any of our C++ sources differs from what clang-format (with .clang-format) would write.
 # Run as: cmake -DROOT=<repo> -DCLANG_FORMAT=<clang-format> -P scripts/check_format.cmake
+cmake_minimum_required(VERSION 3.20)
 set(dirs Interfaces Physics Collision Framework ReferenceGame tests bench packages)
 set(files "")
 foreach(d ${dirs})

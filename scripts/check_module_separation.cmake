@@ -2,6 +2,7 @@
 # Run as: cmake -DROOT=<repo> -P scripts/check_module_separation.cmake
 # This is what lets the sim-only and collision-only packages separate: the two modules (and the framework)
 # meet only through the public headers in Interfaces/.
+cmake_minimum_required(VERSION 3.20)
 if(NOT ROOT)
   get_filename_component(ROOT "${CMAKE_CURRENT_LIST_DIR}/.." ABSOLUTE)
 endif()
