@@ -1,6 +1,7 @@
 // SolverBench.cpp - ms per step of whole scenes (collision + solver + integration), the first speed/accuracy
 // table: 1,000 spheres and 1,000 boxes falling into a pile (600 steps), and the 210-box pyramid at 4, 10 and
 // 20 solver iterations with its top box's drift after 10 s as a counter.
+#include "RBDynamics.h"
 #include "Scenes.h"
 #include "World.h"
 #include "iPhysicsFrame.h"
