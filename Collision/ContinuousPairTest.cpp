@@ -141,8 +141,8 @@ void SimpleCollisionSpace::testPair(const Entry& a, const Entry& b, float delta)
     if (!hit) return;
     // One notice per geometry pair: the average contact position (the centre of the overlap area).
     Notice n;
-    n.g1 = a.g->asInterface();
-    n.g2 = b.g->asInterface();
+    n.g1 = a.g;
+    n.g2 = b.g;
     n.b1 = a.body;
     n.b2 = b.body;
     n.normal = m_contacts[before].normal;

@@ -95,7 +95,7 @@ private:
     std::vector<gcol::WorldShape> m_shapes, m_scratchA, m_scratchB;
     std::vector<int> m_order, m_planes;
     struct Notice {
-        iCollisionGeometry *g1, *g2;
+        CollisionGeometry *g1, *g2; // ours (the space's entries): no cross-cast needed per notice
         iRigidBody *b1, *b2;
         Vector normal, pos;
         int points;

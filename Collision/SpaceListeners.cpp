@@ -16,10 +16,9 @@
 
 namespace {
 
-bool stillBound(iCollisionGeometry* g, iRigidBody* b) {
-    CollisionGeometry* cg = CollisionGeometry::from(g);
-    const CollisionGeometry::SpaceState& st = cg->spaceState();
-    return cg->body() == b && !st.pendingDelete && !st.pendingRemove;
+bool stillBound(CollisionGeometry* g, iRigidBody* b) {
+    const CollisionGeometry::SpaceState& st = g->spaceState();
+    return g->body() == b && !st.pendingDelete && !st.pendingRemove;
 }
 
 } // namespace
@@ -45,10 +44,13 @@ void SimpleCollisionSpace::notifyListeners() {
         for (int side = 0; side < 2; ++side) {
             iRigidBody* self = side == 0 ? n.b1 : n.b2;
             iRigidBody* other = side == 0 ? n.b2 : n.b1;
-            iCollisionGeometry* selfGeom = side == 0 ? n.g1 : n.g2;
-            iCollisionGeometry* otherGeom = side == 0 ? n.g2 : n.g1;
+            CollisionGeometry* selfGeom = side == 0 ? n.g1 : n.g2;
+            CollisionGeometry* otherGeom = side == 0 ? n.g2 : n.g1;
             Vector normal = side == 0 ? n.normal : -n.normal;
+            // Bound-ness first: it compares pointers only, and a body deleted by an earlier call must not be
+            // touched.
             if (!self || !stillBound(selfGeom, self) || !stillBound(otherGeom, other)) continue;
+            if (self->getListeners().empty()) continue; // nobody to tell
             m_listenerSnapshot = self->getListeners();
             for (iCollisionListener* l : m_listenerSnapshot) {
                 if (!stillBound(selfGeom, self) || !stillBound(otherGeom, other)) break;
