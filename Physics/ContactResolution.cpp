@@ -17,8 +17,8 @@ SolverBody SceneBodyAccess::load(RBDynamics* root) const {
     b.w = toEigen(root->angularVelocity);
     auto it = m_bodies.find(root);
     RigidBody* body = it == m_bodies.end() ? nullptr : it->second;
-    if (body && body->asleep) b.v = b.w = Vec3::Zero();
-    if (!body || body->asleep || body->dying() || body->pendingRemoval ||
+    if (body && body->asleep()) b.v = b.w = Vec3::Zero();
+    if (!body || body->asleep() || body->dying() || body->pendingRemoval ||
         root->physicsType == PHYS_FixedInSpace)
         return b; // immovable here: not ours to move, or at rest
     buildComposite(body, m_bodies, m_gravity, m_scratch);
@@ -113,12 +113,12 @@ void Islands::wakeTouched(const std::vector<RigidBody*>& bodies) const {
     std::vector<char> awake(m_parent.size(), 0);
     for (RigidBody* b : bodies) {
         auto it = m_index.find(b);
-        if (it != m_index.end() && !b->asleep) awake[find(it->second)] = 1;
+        if (it != m_index.end() && !b->asleep()) awake[find(it->second)] = 1;
     }
     for (RigidBody* b : bodies) {
         auto it = m_index.find(b);
-        if (it != m_index.end() && b->asleep && awake[find(it->second)]) {
-            b->asleep = false;
+        if (it != m_index.end() && b->asleep() && awake[find(it->second)]) {
+            b->setAsleep(false);
             b->restTime = 0;
         }
     }
@@ -128,7 +128,7 @@ void Islands::updateSleep(const std::vector<RigidBody*>& bodies, float dt) {
     std::vector<float> leastRest(m_parent.size(), kTimeToSleep * 2);
     for (RigidBody* b : bodies) {
         auto it = m_index.find(b);
-        if (it == m_index.end() || b->asleep) continue;
+        if (it == m_index.end() || b->asleep()) continue;
         const RBDynamics& d = b->getDynamics();
         bool resting = d.velocity.length() < kSleepSpeed && d.angularVelocity.length() < kSleepSpeed;
         b->restTime = resting ? b->restTime + dt : 0.0f;
@@ -137,9 +137,9 @@ void Islands::updateSleep(const std::vector<RigidBody*>& bodies, float dt) {
     }
     for (RigidBody* b : bodies) {
         auto it = m_index.find(b);
-        if (it == m_index.end() || b->asleep || leastRest[find(it->second)] < kTimeToSleep) continue;
+        if (it == m_index.end() || b->asleep() || leastRest[find(it->second)] < kTimeToSleep) continue;
         RBDynamics& d = b->getDynamics();
-        b->asleep = true;
+        b->setAsleep(true);
         d.velocity = d.angularVelocity = d.angularMomentum = Vector();
         b->writtenOmega = b->writtenMomentum = Vector();
     }

@@ -118,7 +118,7 @@ void PhysicsScene::remove(const iRigidBody* o) {
 }
 
 void PhysicsScene::forget(RigidBody* b) {
-    b->asleep = b->getDynamics().sleeping = false; // out of the scene, nobody would wake it
+    b->setAsleep(false); // out of the scene, nobody would wake it
     m_bodies.erase(std::remove(m_bodies.begin(), m_bodies.end(), b), m_bodies.end());
     m_byDynamics.erase(&b->getDynamics());
     m_deferredDeletes.erase(std::remove(m_deferredDeletes.begin(), m_deferredDeletes.end(), b),
@@ -285,11 +285,11 @@ void PhysicsScene::step(float dt) {
     for (size_t i = 0; i < m_bodies.size(); ++i) {
         RigidBody* b = m_bodies[i];
         if (b->dying() || b->pendingRemoval) continue;
-        if (b->asleep && !b->editedWhileAsleep()) {
+        if (b->asleep() && !b->editedWhileAsleep()) {
             b->recordPreviousPose();
             continue;
         }
-        b->asleep = b->getDynamics().sleeping = false; // before the space looks: its pairs are tested again
+        b->setAsleep(false); // before the space looks: its pairs are tested again
         b->adoptFrameEdits();
         if (b->validate("before a step")) b->snapshotValid(); // the game's valid edits are kept on failure
         b->recordPreviousPose();
@@ -313,7 +313,7 @@ void PhysicsScene::step(float dt) {
     // 5. Integrate each awake composite: unattached bodies and attachment roots. Attached bodies ride along.
     for (size_t i = 0; i < m_bodies.size(); ++i) {
         RigidBody* b = m_bodies[i];
-        if (b->dying() || b->pendingRemoval || b->asleep || b->getDynamics().attachedTo()) continue;
+        if (b->dying() || b->pendingRemoval || b->asleep() || b->getDynamics().attachedTo()) continue;
         integrateComposite(b, dt);
     }
 
@@ -324,7 +324,7 @@ void PhysicsScene::step(float dt) {
     // 7. A step that produced NaN or Inf (absurd forces) is undone; otherwise it is the new valid state.
     for (size_t i = 0; i < m_bodies.size(); ++i) {
         RigidBody* b = m_bodies[i];
-        if (b->dying() || b->pendingRemoval || b->asleep) continue;
+        if (b->dying() || b->pendingRemoval || b->asleep()) continue;
         if (b->validate("after a step")) b->snapshotValid();
         b->recordStepPose();
     }
@@ -332,7 +332,6 @@ void PhysicsScene::step(float dt) {
     // 8. Islands that rested long enough fall asleep.
     //    RBDynamics::sleeping tells the collision space which pairs need no test.
     if (m_sleeping) m_islands.updateSleep(m_bodies, dt);
-    for (RigidBody* b : m_bodies) b->getDynamics().sleeping = b->asleep;
 
     // 9. Removals and deletions requested during the step.
     ++m_steps;

@@ -59,7 +59,7 @@ void PhysicsScene::setSleepingEnabled(bool on) {
     m_sleeping = on;
     if (!on)
         for (RigidBody* b : m_bodies) {
-            b->asleep = b->getDynamics().sleeping = false;
+            b->setAsleep(false);
             b->restTime = 0;
         }
 }
@@ -67,7 +67,7 @@ void PhysicsScene::setSleepingEnabled(bool on) {
 size_t PhysicsScene::getAwakeBodyCount() const {
     size_t awake = 0;
     for (const RigidBody* b : m_bodies)
-        if (!b->asleep && b->getDynamics().physicsType != PHYS_FixedInSpace) ++awake;
+        if (!b->asleep() && b->getDynamics().physicsType != PHYS_FixedInSpace) ++awake;
     return awake;
 }
 

@@ -68,8 +68,10 @@ public:
     const Vector& previousPosition() const { return m_prevPosition; }
     const Quat& previousRotation() const { return m_prevRotation; }
 
-    // Sleeping: a body (island) at rest for a while stops being integrated until something wakes it.
-    bool asleep = false;
+    // Sleeping: a body (island) at rest for a while stops being integrated until something wakes it. The
+    // state is RBDynamics::sleeping itself, so the collision space sees it without any copying.
+    bool asleep() const { return m_dyn.sleeping; }
+    void setAsleep(bool on) { m_dyn.sleeping = on; }
     float restTime = 0; // seconds spent below the sleep speeds
     // True when the game touched a sleeping body's state since its last step: a velocity, a force or
     // torque, or a new pose. Such a body wakes.
