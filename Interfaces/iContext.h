@@ -10,7 +10,7 @@ enum Integer {
     GF_PHYS_STEP_RATE,         // fixed physics steps per second (default 60)
     GF_PHYS_MAX_STEPS,         // most steps one update(now) may take to catch up (default 8)
     GF_PHYS_INTEGRATOR,        // an Integrator value (iPhysicsSettings.h); 0 = the default
-    GF_PHYS_SOLVER_ITERATIONS, // contact solver iterations per step (default 10)
+    GF_PHYS_SOLVER_ITERATIONS, // contact solver iterations (sub-steps) per step (default 4)
     GF_FRAMES,                 // headless runs: frames to run
     GF_FRAME_MS,               // headless runs: milliseconds a frame
     GF_NO_INTEGERS

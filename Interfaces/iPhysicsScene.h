@@ -77,10 +77,11 @@ public:
     virtual bool addForceGenerator(iRigidBody*, iForceGenerator*) { return false; }
     virtual void removeForceGenerator(const iRigidBody*, const iForceGenerator*) {}
 
-    // Contact resolution, when a collision space is set: sequential-impulse iterations a step, 1..1000
-    // (default 10; GF_PHYS_SOLVER_ITERATIONS). More iterations: stiffer stacks, proportionally more cost.
+    // Contact resolution, when a collision space is set: solver iterations a step, 1..1000 (default 4;
+    // GF_PHYS_SOLVER_ITERATIONS). Each iteration is a sub-step of the contact solve (a sweep that pushes
+    // overlap out, a move, a relaxing sweep): more of them, stiffer stacks at proportionally more cost.
     virtual bool setSolverIterations(int) { return false; }
-    virtual int getSolverIterations() const { return 10; }
+    virtual int getSolverIterations() const { return 4; }
     // How two bodies' friction and restitution combine (iContactSettings.h; defaults COMBINE_Sum,
     // COMBINE_Max).
     virtual bool setFrictionRule(CombineRule) { return false; }

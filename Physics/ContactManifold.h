@@ -1,9 +1,10 @@
-// ContactManifold.h - the solver's working data: a body's velocity state, a contact point with its
+// ContactManifold.h - the solver's working data: a body's velocity state and frames, a contact point with its
 // accumulated impulses, and a manifold of up to four points between two geometries.
 #pragma once
 
 #include "MathBridge.h"
 
+#include <cmath>
 #include <cstddef>
 #include <functional>
 
@@ -17,12 +18,20 @@ namespace physics {
 // velocity, so a moving kinematic body pushes what it touches.
 struct SolverBody {
     RBDynamics* root = nullptr;
-    Vec3 com = Vec3::Zero();
-    Vec3 v = Vec3::Zero();
+    // The root's frame when the contacts were found: contact anchors are measured in it.
+    Vec3 startOrigin = Vec3::Zero();
+    Quat startRotation = Quat::Identity();
+    // The root's frame now. A movable body starts the solve at its start frame and moves with each sub-step;
+    // an immovable one stays where the step put it.
+    Vec3 origin = Vec3::Zero();
+    Quat rotation = Quat::Identity();
+    Vec3 com = Vec3::Zero(); // world centre of mass, at the step's start on loading
+    Vec3 v = Vec3::Zero();   // velocities after this step's forces, on loading
     Vec3 w = Vec3::Zero();
+    // What this step's forces added to v and w: the sub-steps add it a share at a time.
+    Vec3 dv = Vec3::Zero(), dw = Vec3::Zero();
     float invMass = 0;
     Mat3 invInertia = Mat3::Zero();
-    bool settling = false; // still overlapping beyond the slop after position correction: not at rest yet
 };
 
 struct ContactPoint {
@@ -30,11 +39,17 @@ struct ContactPoint {
     Vec3 tangent[2] = {Vec3::UnitX(), Vec3::UnitZ()};    // a fixed basis derived from the normal
     Vec3 anchorA = Vec3::Zero(), anchorB = Vec3::Zero(); // the touching surface points, in each root's frame
     Vec3 rA = Vec3::Zero(), rB = Vec3::Zero();           // from each centre of mass to the contact (world)
-    float depth = 0; // overlap; negative for a point kept from last step that has since come apart
+    float depth = 0; // overlap when found; negative for a point kept from last step that has since come apart
+    // The constraint rows, for the normal (0) and the two tangents (1, 2): r x direction on each body, and
+    // I^-1 (r x direction), how an impulse along the direction turns each body.
+    Vec3 armA[3] = {Vec3::Zero(), Vec3::Zero(), Vec3::Zero()},
+         armB[3] = {Vec3::Zero(), Vec3::Zero(), Vec3::Zero()};
+    Vec3 turnA[3] = {Vec3::Zero(), Vec3::Zero(), Vec3::Zero()},
+         turnB[3] = {Vec3::Zero(), Vec3::Zero(), Vec3::Zero()};
     float normalMass = 0, tangentMass[2] = {0, 0};
-    float normalImpulse = 0, tangentImpulse[2] = {0, 0}; // accumulated over the step
-    float target =
-        0; // the v_n to reach: the bounce speed, or -gap/dt for a kept point (it may close the gap)
+    float normalImpulse = 0, tangentImpulse[2] = {0, 0}; // accumulated, per sub-step
+    float approachSpeed = 0;    // v_n when the solve began (negative: approaching), for restitution
+    float maxNormalImpulse = 0; // over the sub-steps: a point that never pushed does not bounce
 };
 
 struct Manifold {
@@ -58,5 +73,12 @@ struct PairKeyHash {
         return std::hash<const void*>()(k.g1) * 31u ^ std::hash<const void*>()(k.g2);
     }
 };
+
+// A tangent basis that depends on the normal alone, so last step's friction impulses still apply.
+inline void tangentBasis(const Vec3& n, Vec3 t[2]) {
+    Vec3 axis = std::fabs(n.x()) < 0.57f ? Vec3::UnitX() : Vec3::UnitY();
+    t[0] = n.cross(axis).normalized();
+    t[1] = n.cross(t[0]);
+}
 
 } // namespace physics

@@ -12,11 +12,15 @@ SolverBody SceneBodyAccess::load(RBDynamics* root) const {
     if (!root) return SolverBodyAccess::load(nullptr); // the static world
     SolverBody b;
     b.root = root;
-    b.com = toEigen(root->position);
+    b.com = b.origin = toEigen(root->position);
+    b.rotation = toQuat(root->orientation);
     b.v = toEigen(root->velocity);
     b.w = toEigen(root->angularVelocity);
     auto it = m_bodies.find(root);
     RigidBody* body = it == m_bodies.end() ? nullptr : it->second;
+    // The contacts were found at the step's starting poses: anchors are measured there.
+    b.startOrigin = body ? toEigen(body->previousPosition()) : b.origin;
+    b.startRotation = body ? body->previousRotation() : b.rotation;
     if (body && body->asleep()) b.v = b.w = Vec3::Zero();
     if (!body || body->asleep() || body->dying() || body->pendingRemoval ||
         root->physicsType == PHYS_FixedInSpace)
@@ -29,6 +33,8 @@ SolverBody SceneBodyAccess::load(RBDynamics* root) const {
     Quat q0 = body->previousRotation();
     b.com = toEigen(body->previousPosition()) - q0 * m_scratch.rootOffset;
     b.v -= b.w.cross(toQuat(root->orientation) * m_scratch.rootOffset);
+    b.dv = body->forceDv;
+    b.dw = body->forceDw;
     b.invMass = m_scratch.invMass;
     b.invInertia = worldInverseInertia(m_scratch, q0);
     m_mass[root] = Mass{body, m_scratch.rootOffset, m_scratch.inertia};
@@ -44,25 +50,11 @@ bool SceneBodyAccess::alive(const RBDynamics* root) const {
 void SceneBodyAccess::storeVelocity(const SolverBody& b) const {
     if (!b.root || b.invMass == 0.0f) return;
     const Mass& m = m_mass.at(b.root);
-    Mat3 r = toRotation(b.root->orientation);
+    Mat3 r = b.rotation.toRotationMatrix();
     Vec3 arm = r * m.rootOffset;
     b.root->angularVelocity = toVector(b.w);
     b.root->velocity = toVector(b.v + b.w.cross(arm));
     b.root->angularMomentum = toVector(r * m.inertia * r.transpose() * b.w);
-}
-
-void SceneBodyAccess::advancePoses(const std::vector<SolverBody>& bodies, float dt) const {
-    for (const SolverBody& b : bodies) {
-        if (!b.root || b.invMass == 0.0f) continue;
-        const Mass& m = m_mass.at(b.root);
-        Quat q0 = m.body->previousRotation();
-        Vec3 centre0 = toEigen(m.body->previousPosition()) - q0 * m.rootOffset;
-        Quat q1 = rotateBy(q0, b.w, dt);
-        Vec3 centre1 = centre0 + b.v * dt;
-        b.root->position = toVector(centre1 + q1 * m.rootOffset);
-        b.root->orientation = toOrientation(q1);
-        const_cast<SolverBody&>(b).com = centre1;
-    }
 }
 
 void SceneBodyAccess::acceptWrites(const std::vector<SolverBody>& bodies) const {
@@ -72,7 +64,7 @@ void SceneBodyAccess::acceptWrites(const std::vector<SolverBody>& bodies) const 
         body->writtenOmega = b.root->angularVelocity;
         body->writtenMomentum = b.root->angularMomentum;
         body->writtenOrientation = b.root->orientation;
-        body->rotation = toQuat(b.root->orientation);
+        body->rotation = b.rotation;
     }
 }
 

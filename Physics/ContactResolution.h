@@ -3,9 +3,9 @@
 //
 // Bodies enter the solver as composites (an attachment chain is one body about its combined centre of mass).
 // A body this scene does not simulate (another owner's, a sleeping one) enters as immovable, keeping its
-// velocity, so a game-animated body still pushes. After the velocity solve, a body the solver moved is
-// advanced from the step's starting pose with its solved velocities (semi-implicit Euler for that step,
-// whatever the integrator), so it never moves into what it touches.
+// velocity, so a game-animated body still pushes. A body the solver moves is moved again from the step's
+// starting pose through the solver's sub-steps (semi-implicit Euler, whatever the integrator), with what its
+// integrator did to its velocities added a share per sub-step, so it never moves into what it touches.
 #pragma once
 
 #include "Composite.h"
@@ -28,8 +28,6 @@ public:
     SolverBody load(RBDynamics* root) const override;
     void storeVelocity(const SolverBody& b) const override;
     bool alive(const RBDynamics* root) const override;
-    // Advances each movable solver body from its step-start pose with its solved velocities.
-    void advancePoses(const std::vector<SolverBody>& bodies, float dt) const;
     // Records the solver's writes as the simulator's own, so the next step does not take them for edits.
     void acceptWrites(const std::vector<SolverBody>& bodies) const;
 

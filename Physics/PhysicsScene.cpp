@@ -367,8 +367,11 @@ void PhysicsScene::integrateComposite(RigidBody* body, float dt) {
         Vec3 arm = q * c.rootOffset; // root COM - C, world
         MotionState s{toEigen(d.position) - arm, toEigen(d.velocity) - omega.cross(arm),
                       toEigen(d.angularMomentum), q};
+        const Vec3 v0 = s.v;
         integrate(m_integrator, c, s, dt, omega);
         Vec3 omega1 = c.kinematic ? omega : Vec3(worldInverseInertia(c, s.q) * s.L);
+        body->forceDv = s.v - v0;
+        body->forceDw = omega1 - omega;
         Vec3 arm1 = s.q * c.rootOffset;
         d.position = toVector(s.x + arm1);
         d.velocity = toVector(s.v + omega1.cross(arm1));

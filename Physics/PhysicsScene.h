@@ -51,7 +51,7 @@ public:
     bool addForceGenerator(iRigidBody* body, iForceGenerator* g) override;
     void removeForceGenerator(const iRigidBody* body, const iForceGenerator* g) override;
     bool setSolverIterations(int n) override;
-    int getSolverIterations() const override { return m_solver.settings().velocityIterations; }
+    int getSolverIterations() const override { return m_solver.settings().substeps; }
     bool setFrictionRule(CombineRule r) override;
     bool setRestitutionRule(CombineRule r) override;
     void setSleepingEnabled(bool on) override;

@@ -8,16 +8,8 @@ namespace physics {
 
 void PhysicsScene::resolveContacts(const CollisionContact* contacts, size_t count, float dt) {
     SceneBodyAccess access(m_byDynamics, toEigen(m_gravity));
-    m_solver.solveVelocities(contacts, count, dt, access);
-    access.advancePoses(m_solver.bodies(), dt);
-    m_solver.correctPositions(access);
+    m_solver.solve(contacts, count, dt, access);
     access.acceptWrites(m_solver.bodies());
-    // A body still being pushed out of an overlap is not at rest, however slowly it moves: it must not
-    // fall asleep with the overlap frozen in.
-    for (const SolverBody& b : m_solver.bodies()) {
-        auto it = b.settling && b.root ? m_byDynamics.find(b.root) : m_byDynamics.end();
-        if (it != m_byDynamics.end()) it->second->restTime = 0;
-    }
 }
 
 bool PhysicsScene::setSolverIterations(int n) {
@@ -26,7 +18,7 @@ bool PhysicsScene::setSolverIterations(int n) {
         return false;
     }
     SolverSettings s = m_solver.settings();
-    s.velocityIterations = n;
+    s.substeps = n;
     m_solver.setSettings(s);
     return true;
 }

@@ -81,6 +81,9 @@ public:
     Vector writtenOmega, writtenMomentum;
     Matrix writtenOrientation = Matrix(1);
     Quat rotation = Quat::Identity(); // the exact quaternion behind writtenOrientation
+    // What the integrator's forces did to the composite's velocities (about its centre of mass) this step:
+    // the contact solver re-applies it a share per sub-step.
+    Vec3 forceDv = Vec3::Zero(), forceDw = Vec3::Zero();
     // Composite mass properties of the last step (a change means attach/detach or new inertia: keep w).
     bool hasComposite = false;
     float compositeMass = 0;

@@ -2,6 +2,7 @@
 set(GUARDIAN_PHYSICS_SOURCES
   BodyValidation.cpp
   Composite.cpp
+  ContactManifolds.cpp
   ContactResolution.cpp
   ContactSolver.cpp
   Integrators.cpp

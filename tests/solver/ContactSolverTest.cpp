@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -39,7 +40,7 @@ TEST(ContactSolver, HeadOnCollisionMatchesTheRestitutionLaw) {
         p.b.d.velocity = Vector(v2, 0, 0);
         CollisionContact c = contact(p.ga, p.gb, Vector(0, 0, 0), Vector(1, 0, 0), 0.0f);
         ContactSolver solver;
-        solver.solveVelocities(&c, 1, kDt, SolverBodyAccess());
+        solver.solve(&c, 1, kDt, SolverBodyAccess());
         float expected1 = (m1 * v1 + m2 * v2 + m2 * e * (v2 - v1)) / (m1 + m2);
         float expected2 = (m1 * v1 + m2 * v2 + m1 * e * (v1 - v2)) / (m1 + m2);
         EXPECT_NEAR(p.a.d.velocity.x, expected1, 1e-4f) << "e = " << e;
@@ -57,9 +58,9 @@ TEST(ContactSolver, SlowApproachDoesNotBounce) {
     p.b.d.velocity = Vector(0, -0.5f, 0);
     CollisionContact c = contact(p.ga, p.gb, Vector(0, 0, 0), Vector(0, 1, 0), 0.001f);
     ContactSolver solver;
-    solver.solveVelocities(&c, 1, kDt, SolverBodyAccess());
-    EXPECT_NEAR(p.b.d.velocity.y, 0.0f, 1e-6f);
-    EXPECT_EQ(p.a.d.velocity.y, 0.0f); // the fixed body never moves
+    solver.solve(&c, 1, kDt, SolverBodyAccess());
+    EXPECT_NEAR(p.b.d.velocity.y, 0.0f, 1e-4f); // stopped; the 1 mm overlap's push-out speed is relaxed away
+    EXPECT_EQ(p.a.d.velocity.y, 0.0f);          // the fixed body never moves
 }
 
 TEST(ContactSolver, FrictionTakesMuTimesTheNormalImpulse) {
@@ -79,13 +80,15 @@ TEST(ContactSolver, FrictionTakesMuTimesTheNormalImpulse) {
     for (float x : {-0.5f, 0.5f})
         for (float z : {-0.5f, 0.5f}) cs[i++] = contact(p.ga, p.gb, Vector(x, 0, z), Vector(0, 1, 0), 0.0f);
     ContactSolver solver;
-    solver.solveVelocities(cs, 4, kDt, SolverBodyAccess());
-    EXPECT_NEAR(p.b.d.velocity.y, 0.0f, 1e-4f);
+    const SolverBodyAccess gravity(physics::Vec3(0, -kG * kDt, 0)); // the sub-steps add it a share at a time
+    solver.solve(cs, 4, kDt, gravity);
+    EXPECT_NEAR(p.b.d.velocity.y, 0.0f, 1e-3f);
     EXPECT_NEAR(p.b.d.velocity.x, 1.0f - 0.5f * kG * kDt, 2e-3f);
     // A slow slide is stopped outright rather than reversed.
+    p.b.d.position = Vector(0, 0.5f, 0);
     p.b.d.velocity = Vector(0.01f, -kG * kDt, 0);
-    solver.solveVelocities(cs, 4, kDt, SolverBodyAccess());
-    EXPECT_NEAR(p.b.d.velocity.x, 0.0f, 1e-4f);
+    solver.solve(cs, 4, kDt, gravity);
+    EXPECT_NEAR(p.b.d.velocity.x, 0.0f, 1e-3f); // (was 0.01 m/s; what is left is Gauss-Seidel's residue)
 }
 
 TEST(ContactSolver, OffCentreImpactSpinsTheBodyAsImpulseMechanicsSays) {
@@ -103,10 +106,7 @@ TEST(ContactSolver, OffCentreImpactSpinsTheBodyAsImpulseMechanicsSays) {
     CollisionContact c = contact(p.ga, p.gb, r, n, 0.0f);
     p.b.d.friction = p.a.d.friction = 0.0f; // normal impulse alone
     ContactSolver solver;
-    physics::SolverSettings s;
-    s.velocityIterations = 1; // a single contact converges in one iteration
-    solver.setSettings(s);
-    solver.solveVelocities(&c, 1, kDt, SolverBodyAccess());
+    solver.solve(&c, 1, kDt, SolverBodyAccess());
     Matrix inv = inertia.inverse();
     Vector rn = cross(r, n);
     float k = 1 / m + dot(n, cross(rn * inv, r));
@@ -120,23 +120,24 @@ TEST(ContactSolver, OffCentreImpactSpinsTheBodyAsImpulseMechanicsSays) {
 }
 
 TEST(ContactSolver, WarmStartCarriesTheRestingImpulseAcrossSteps) {
-    // A resting box needs a normal impulse of m g dt every step. Warm started, one iteration a step is enough
-    // to hold it: the stored impulse converges to m g dt and the box does not sink.
+    // A resting box needs a normal impulse of m g h every sub-step h. Warm started, one sub-step a step is
+    // enough to hold it: the stored impulse converges to m g dt and the box neither sinks nor tilts.
     Pair p;
     p.a.d.physicsType = PHYS_FixedInSpace;
     p.b.d.mass = 3.0f;
     p.b.d.setInertiaTensor(getBoxInertiaTensor(3.0f, Vector(0.5f, 0.5f, 0.5f)));
+    p.b.d.position = Vector(0, 0.5f, 0);
     CollisionContact cs[4];
     int i = 0;
     for (float x : {-0.5f, 0.5f})
         for (float z : {-0.5f, 0.5f}) cs[i++] = contact(p.ga, p.gb, Vector(x, 0, z), Vector(0, 1, 0), 0.0f);
     ContactSolver solver;
     physics::SolverSettings s;
-    s.velocityIterations = 1;
+    s.substeps = 1;
     solver.setSettings(s);
     for (int step = 0; step < 30; ++step) {
         p.b.d.velocity += Vector(0, -kG * kDt, 0); // gravity
-        solver.solveVelocities(cs, 4, kDt, SolverBodyAccess());
+        solver.solve(cs, 4, kDt, SolverBodyAccess(physics::Vec3(0, -kG * kDt, 0)));
     }
     float total = 0;
     for (const physics::Manifold& m : solver.manifolds())
@@ -146,26 +147,73 @@ TEST(ContactSolver, WarmStartCarriesTheRestingImpulseAcrossSteps) {
     EXPECT_NEAR(p.b.d.angularVelocity.length(), 0.0f, 1e-4f);
 }
 
-TEST(ContactSolver, PositionCorrectionRemovesOverlapBeyondTheSlopWithoutAddingVelocity) {
+TEST(ContactSolver, AShallowOverlapIsPushedOutSoftlyWithoutAddingVelocity) {
+    // A unit box sunk 5 mm into a fixed floor: the soft contact, a heavily damped spring, pushes it out over
+    // a few steps (never faster than maxPushSpeed), and the relax passes leave it no speed: no bounce, no
+    // energy.
     Pair p;
     p.a.d.physicsType = PHYS_FixedInSpace;
-    p.b.d.position = Vector(0, 0.4f, 0); // a unit box sunk 0.1 m into the floor (top at y = 0)
+    p.b.d.position = Vector(0, 0.495f, 0);
+    ContactSolver solver;
+    float previous = 0.495f, worstSpeed = 0;
+    for (int step = 1; step <= 30; ++step) {
+        float depth = 0.5f - p.b.d.position.y;
+        CollisionContact cs[4];
+        int i = 0;
+        for (float x : {-0.5f, 0.5f})
+            for (float z : {-0.5f, 0.5f})
+                cs[i++] = contact(p.ga, p.gb, Vector(x, -0.5f * depth, z), Vector(0, 1, 0), depth);
+        solver.solve(cs, 4, kDt, SolverBodyAccess());
+        worstSpeed = std::max(worstSpeed, p.b.d.velocity.length());
+        EXPECT_GE(p.b.d.position.y, previous - 1e-6f) << "step " << step; // out, never back in
+        EXPECT_LE(p.b.d.position.y - previous, solver.settings().maxPushSpeed * kDt + 1e-6f);
+        previous = p.b.d.position.y;
+        if (step == 3) {
+            EXPECT_GT(p.b.d.position.y, 0.4975f); // half out within 3 steps (50 ms)
+        }
+    }
+    EXPECT_NEAR(p.b.d.position.y, 0.5f, 1e-4f); // out, and not beyond touching
+    EXPECT_LT(worstSpeed, 1e-3f);
+    EXPECT_TRUE(isRotation(p.b.d.orientation));
+    EXPECT_NEAR(p.b.d.orientation.m11, 1.0f, 1e-5f); // a level push does not tilt it
+}
+
+TEST(ContactSolver, ADeepOverlapIsProjectedOutAtOnce) {
+    // 10 cm deep (a fast body found late): out to within deepOverlap in one step, without any speed.
+    Pair p;
+    p.a.d.physicsType = PHYS_FixedInSpace;
+    p.b.d.position = Vector(0, 0.4f, 0);
     CollisionContact cs[4];
     int i = 0;
     for (float x : {-0.5f, 0.5f})
         for (float z : {-0.5f, 0.5f})
             cs[i++] = contact(p.ga, p.gb, Vector(x, -0.05f, z), Vector(0, 1, 0), 0.1f);
     ContactSolver solver;
-    physics::SolverSettings s;
-    s.positionIterations = 50;
-    solver.setSettings(s);
-    solver.solveVelocities(cs, 4, kDt, SolverBodyAccess());
-    solver.correctPositions(SolverBodyAccess());
-    EXPECT_NEAR(p.b.d.position.y, 0.5f - s.slop, 1e-3f); // out, to within the slop
-    EXPECT_LE(solver.maxPenetrationAfter(), s.slop + 1e-3f);
-    EXPECT_NEAR(p.b.d.velocity.length(), 0.0f, 1e-6f); // positions only: no energy added
-    EXPECT_TRUE(isRotation(p.b.d.orientation));
-    EXPECT_NEAR(p.b.d.orientation.m11, 1.0f, 1e-5f); // a level push does not tilt it
+    solver.solve(cs, 4, kDt, SolverBodyAccess());
+    EXPECT_NEAR(p.b.d.position.y, 0.5f - solver.settings().deepOverlap, 2e-3f);
+    EXPECT_LE(solver.maxPenetrationAfter(), solver.settings().deepOverlap + 1e-3f);
+    EXPECT_NEAR(p.b.d.velocity.length(), 0.0f, 1e-3f);
+}
+
+TEST(ContactSolver, ALandingBoxLosesMuTimesItsImpactSpeedOfSlidingSpeed) {
+    // Coulomb's law for an impact: the normal impulse m v_n stops the fall (e = 0), and friction takes at
+    // most mu m v_n of the slide: 3 m/s - 0.5 * 4 m/s = 1 m/s. (Friction bounded by a warm-started impact
+    // impulse in every sub-step would stop the slide outright.)
+    Pair p;
+    p.a.d.physicsType = PHYS_FixedInSpace;
+    p.a.d.restitution = p.b.d.restitution = 0.0f;
+    p.b.d.position = Vector(0, 0.5f, 0);
+    p.b.d.velocity = Vector(3, -4, 0);
+    CollisionContact cs[4];
+    int i = 0;
+    for (float x : {-0.5f, 0.5f})
+        for (float z : {-0.5f, 0.5f}) cs[i++] = contact(p.ga, p.gb, Vector(x, 0, z), Vector(0, 1, 0), 0.0f);
+    ContactSolver solver;
+    solver.solve(cs, 4, kDt, SolverBodyAccess());
+    // Gauss-Seidel leaves a residue of the re-applied impact impulse: measured 0.06 m/s of hop and 7 % more
+    // friction than Coulomb's (0.93 m/s).
+    EXPECT_NEAR(p.b.d.velocity.y, 0.0f, 0.1f);
+    EXPECT_NEAR(p.b.d.velocity.x, 3.0f - 0.5f * 4.0f, 0.1f);
 }
 
 TEST(ContactSolver, CombineRules) {
@@ -186,10 +234,9 @@ TEST(ContactSolver, ABodilessGeometryIsTheStaticWorld) {
     ball.d.velocity = Vector(0, -4, 0);
     CollisionContact c = contact(plane, sphere, Vector(0, 0, 0), Vector(0, 1, 0), 0.01f);
     ContactSolver solver;
-    solver.solveVelocities(&c, 1, kDt, SolverBodyAccess());
+    solver.solve(&c, 1, kDt, SolverBodyAccess());
     EXPECT_NEAR(ball.d.velocity.y, 2.0f, 1e-4f); // bounces at e = 0.5
-    solver.correctPositions(SolverBodyAccess());
-    EXPECT_GT(ball.d.position.y, 0.0f); // pushed out of the plane
+    EXPECT_GE(ball.d.position.y, 0.0f);          // not pushed into the plane
 }
 
 TEST(ContactSolver, ACornerThatLiftedByAHairIsKeptAndHoldsOnlyOnceItsGapCloses) {
@@ -208,18 +255,20 @@ TEST(ContactSolver, ACornerThatLiftedByAHairIsKeptAndHoldsOnlyOnceItsGapCloses) 
         physics::SolverSettings s;
         s.keepDistance = keepDistance;
         solver.setSettings(s);
+        const SolverBodyAccess gravity(physics::Vec3(0, -kG * kDt, 0));
         CollisionContact cs[4];
         int i = 0;
         for (float x : {-0.5f, 0.5f})
             for (float z : {-0.5f, 0.5f})
                 cs[i++] = contact(p.ga, p.gb, Vector(x, 0, z), Vector(0, 1, 0), 0.0f);
-        solver.solveVelocities(cs, 4, kDt, SolverBodyAccess());
+        solver.solve(cs, 4, kDt, gravity);
         p.b.d.position = Vector(0, 0.501f, 0);
+        p.b.d.orientation = Matrix(1);
         p.b.d.velocity = Vector(0, -kG * kDt, 0);
         p.b.d.angularVelocity = Vector();
         CollisionContact edge[2] = {contact(p.ga, p.gb, Vector(-0.5f, 0.001f, 0.5f), Vector(0, 1, 0), 0.0f),
                                     contact(p.ga, p.gb, Vector(0.5f, 0.001f, 0.5f), Vector(0, 1, 0), 0.0f)};
-        solver.solveVelocities(edge, 2, kDt, SolverBodyAccess());
+        solver.solve(edge, 2, kDt, gravity);
         points = size_t(solver.manifolds()[0].count);
         return p.b.d.angularVelocity.length();
     };

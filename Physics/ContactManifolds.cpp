@@ -1,0 +1,200 @@
+// ContactManifolds.cpp - this step's manifolds: the detector's contacts grouped per geometry pair (up to 4
+// points each), last step's points that came apart by a hair kept, and each point matched with last step's
+// point at the same place so that it starts from that point's impulses (warm starting).
+#include "ContactSolver.h"
+
+#include "RBDynamics.h"
+#include "iCollisionGeometry.h"
+#include "iCollisionSpace.h"
+#include "iRigidBody.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace physics {
+
+namespace {
+// Anchors are measured in a root's frame at the step's start, where the detector found the contacts; the
+// static world's are world points.
+Vec3 localAnchor(const SolverBody& b, const Vec3& world) {
+    return b.root ? Vec3(b.startRotation.conjugate() * (world - b.startOrigin)) : world;
+}
+Vec3 startPoint(const SolverBody& b, const Vec3& anchor) {
+    return b.root ? Vec3(b.startRotation * anchor + b.startOrigin) : anchor;
+}
+} // namespace
+
+int ContactSolver::bodyIndex(RBDynamics* root, const SolverBodyAccess& access) {
+    auto it = m_bodyIndex.find(root);
+    if (it != m_bodyIndex.end()) return it->second;
+    m_bodies.push_back(access.load(root));
+    int index = int(m_bodies.size()) - 1;
+    m_bodyIndex.emplace(root, index);
+    return index;
+}
+
+void ContactSolver::buildManifolds(const CollisionContact* contacts, size_t count,
+                                   const SolverBodyAccess& access) {
+    m_bodies.clear();
+    m_bodyIndex.clear();
+    m_manifolds.clear();
+    std::unordered_map<PairKey, size_t, PairKeyHash> current;
+    m_maxDepthBefore = 0;
+    for (size_t i = 0; contacts && i < count; ++i) {
+        const CollisionContact& c = contacts[i];
+        if (!c.g1 || !c.g2) continue;
+        iRigidBody* rb1 = c.g1->getRigidBody();
+        iRigidBody* rb2 = c.g2->getRigidBody();
+        RBDynamics* rootA = rb1 ? rb1->getDynamics().attachmentRoot() : nullptr;
+        RBDynamics* rootB = rb2 ? rb2->getDynamics().attachmentRoot() : nullptr;
+        bool fixedA = !rootA || immovable(*rootA), fixedB = !rootB || immovable(*rootB);
+        if (rootA == rootB || (fixedA && fixedB)) continue;
+        Vec3 n = toEigen(c.normal);
+        if (!n.allFinite() || n.squaredNorm() < 0.5f || !std::isfinite(c.depth)) continue;
+        n.normalize();
+
+        PairKey key{c.g1, c.g2};
+        auto found = current.find(key);
+        if (found == current.end()) {
+            Manifold m;
+            m.g1 = c.g1;
+            m.g2 = c.g2;
+            m.rootA = rootA;
+            m.rootB = rootB;
+            m.a = bodyIndex(rootA, access);
+            m.b = bodyIndex(rootB, access);
+            // A bodiless geometry has the default material of a body.
+            static const RBDynamics defaults;
+            const RBDynamics& matA = rb1 ? rb1->getDynamics() : defaults;
+            const RBDynamics& matB = rb2 ? rb2->getDynamics() : defaults;
+            m.friction = combine(m_settings.friction, matA.friction, matB.friction);
+            m.restitution = combine(m_settings.restitution, matA.restitution, matB.restitution);
+            found = current.emplace(key, m_manifolds.size()).first;
+            m_manifolds.push_back(m);
+        }
+        Manifold& m = m_manifolds[found->second];
+        ContactPoint p;
+        p.normal = n;
+        tangentBasis(n, p.tangent);
+        p.depth = std::max(0.0f, c.depth);
+        // The two touching surface points: a's reaches depth/2 past the contact point along n, b's as far
+        // back.
+        Vec3 pos = toEigen(c.pos);
+        Vec3 onA = pos + 0.5f * p.depth * n, onB = pos - 0.5f * p.depth * n;
+        p.anchorA = localAnchor(m_bodies[m.a], onA);
+        p.anchorB = localAnchor(m_bodies[m.b], onB);
+        p.rA = pos - m_bodies[m.a].com;
+        p.rB = pos - m_bodies[m.b].com;
+        m_maxDepthBefore = std::max(m_maxDepthBefore, p.depth);
+        if (m.count < 4) {
+            m.points[m.count++] = p;
+        } else { // keep the four deepest
+            ContactPoint* shallowest =
+                std::min_element(m.points, m.points + 4, [](auto& x, auto& y) { return x.depth < y.depth; });
+            if (shallowest->depth < p.depth) *shallowest = p;
+        }
+    }
+    keepPoints(access, current);
+}
+
+// A collision detector reports only touching points, so a resting box that rocks by a hair loses the
+// corners that lifted, stands on the others for a step, and rocks back: the contacts flicker and the warm
+// start is lost with them. Like a persistent manifold (Bullet's contact breaking threshold), a pair still
+// touching keeps last step's points that came apart by less than keepDistance, each with its impulses. Such
+// a point is speculative: it holds only once its gap closes (see solveContacts), so it never pulls and never
+// stops a body short of touching.
+void ContactSolver::keepPoints(const SolverBodyAccess& access,
+                               const std::unordered_map<PairKey, size_t, PairKeyHash>& reported) {
+    if (m_settings.keepDistance <= 0.0f) return;
+    const float keep = m_settings.keepDistance, match2 = m_settings.matchDistance * m_settings.matchDistance;
+    // Appends to m the points of old that m lacks and that are apart by less than keep; rA, rB hold the
+    // world contact point until the bodies are known.
+    auto keepFrom = [&](const Manifold& old, Manifold& m) {
+        const SolverBody &a = m_bodies[m.a], &b = m_bodies[m.b];
+        const Vec3 n = m.count ? m.points[0].normal : old.points[0].normal;
+        const int reportedCount = m.count;
+        for (int j = 0; j < old.count && m.count < 4; ++j) {
+            const ContactPoint& o = old.points[j];
+            bool known = false;
+            for (int i = 0; i < reportedCount && !known; ++i)
+                known = (m.points[i].anchorA - o.anchorA).squaredNorm() <= match2;
+            if (known) continue;
+            Vec3 onA = startPoint(a, o.anchorA), onB = startPoint(b, o.anchorB), gap = onB - onA;
+            float separation = n.dot(gap);
+            if (separation <= 0.0f || separation > keep || (gap - separation * n).norm() > keep)
+                continue; // touching again is the detector's to report; too far apart or slid off: broken
+            ContactPoint p = o;
+            p.normal = n;
+            tangentBasis(n, p.tangent);
+            p.depth = -separation;
+            p.rA = p.rB = 0.5f * (onA + onB);
+            m.points[m.count++] = p;
+        }
+        return reportedCount;
+    };
+    auto toArms = [&](Manifold& m, int from) {
+        for (int i = from; i < m.count; ++i) {
+            m.points[i].rA -= m_bodies[m.a].com;
+            m.points[i].rB -= m_bodies[m.b].com;
+        }
+    };
+    for (Manifold& m : m_manifolds) {
+        auto it = m_previous.find(PairKey{m.g1, m.g2});
+        if (it != m_previous.end()) toArms(m, keepFrom(it->second, m));
+    }
+    // A pair the detector no longer reports at all (lifted by a hair) keeps its points for one step.
+    for (const Manifold& old : m_previousList) {
+        if (old.age > 0 || reported.count(PairKey{old.g1, old.g2}) || !access.alive(old.rootA) ||
+            !access.alive(old.rootB))
+            continue;
+        Manifold m = old;
+        m.age = 1;
+        m.count = 0;
+        m.a = bodyIndex(old.rootA, access);
+        m.b = bodyIndex(old.rootB, access);
+        keepFrom(old, m);
+        if (m.count == 0) continue;
+        toArms(m, 0);
+        m_manifolds.push_back(m);
+    }
+}
+
+void ContactSolver::matchPreviousImpulses() {
+    const float best0 = m_settings.matchDistance * m_settings.matchDistance;
+    for (Manifold& m : m_manifolds) {
+        auto it = m_settings.warmStart ? m_previous.find(PairKey{m.g1, m.g2}) : m_previous.end();
+        if (it == m_previous.end()) continue;
+        const Manifold& old = it->second;
+        for (int i = 0; i < m.count; ++i) {
+            ContactPoint& p = m.points[i];
+            // The old point at the same place on body a.
+            const ContactPoint* match = nullptr;
+            float best = best0;
+            for (int j = 0; j < old.count; ++j) {
+                float d2 = (old.points[j].anchorA - p.anchorA).squaredNorm();
+                if (d2 <= best) {
+                    best = d2;
+                    match = &old.points[j];
+                }
+            }
+            if (!match) continue;
+            p.normalImpulse = match->normalImpulse;
+            Vec3 friction =
+                match->tangent[0] * match->tangentImpulse[0] + match->tangent[1] * match->tangentImpulse[1];
+            p.tangentImpulse[0] = friction.dot(p.tangent[0]);
+            p.tangentImpulse[1] = friction.dot(p.tangent[1]);
+        }
+    }
+}
+
+void ContactSolver::storeImpulses() {
+    m_previous.clear();
+    m_previousList.clear();
+    for (const Manifold& m : m_manifolds) {
+        if (m.count == 0) continue;
+        m_previous.emplace(PairKey{m.g1, m.g2}, m);
+        m_previousList.push_back(m);
+    }
+}
+
+} // namespace physics
