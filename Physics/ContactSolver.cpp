@@ -251,15 +251,24 @@ void ContactSolver::moveBodies(float h) {
 }
 
 // A point that approached faster than the threshold and pushed in some sub-step leaves at e times its
-// approach speed (once, after the sub-steps, so a resting contact never bounces).
+// approach speed (after the sub-steps, so a resting contact never bounces). The bouncing points are swept
+// several times, alternately forward and backward: one sweep over a box's four corners spun a box that
+// landed flat at 4.3 rad/s (now 0.19).
 void ContactSolver::applyRestitution() {
     const float threshold = -m_settings.restitutionThreshold;
-    for (Manifold& m : m_manifolds) {
-        if (m.restitution <= 0.0f) continue;
-        SolverBody &a = m_bodies[m.a], &b = m_bodies[m.b];
-        for (int i = 0; i < m.count; ++i) {
+    m_bouncing.clear();
+    for (size_t k = 0; k < m_manifolds.size(); ++k) {
+        const Manifold& m = m_manifolds[k];
+        for (int i = 0; m.restitution > 0.0f && i < m.count; ++i)
+            if (m.points[i].approachSpeed < threshold && m.points[i].maxNormalImpulse > 0.0f)
+                m_bouncing.push_back({k, i});
+    }
+    for (int sweep = 0; sweep < kRestitutionSweeps && !m_bouncing.empty(); ++sweep) {
+        for (size_t j = 0; j < m_bouncing.size(); ++j) {
+            const auto& [k, i] = m_bouncing[sweep % 2 ? m_bouncing.size() - 1 - j : j];
+            Manifold& m = m_manifolds[k];
             ContactPoint& p = m.points[i];
-            if (p.approachSpeed > threshold || p.maxNormalImpulse <= 0.0f) continue;
+            SolverBody &a = m_bodies[m.a], &b = m_bodies[m.b];
             float vn = relativeSpeed(a, b, p, 0);
             float total =
                 std::max(0.0f, p.normalImpulse - p.normalMass * (vn + m.restitution * p.approachSpeed));

@@ -26,6 +26,7 @@
 
 #include <cstddef>
 #include <unordered_map>
+#include <utility>
 #include <vector>
 
 struct CollisionContact;
@@ -121,6 +122,8 @@ private:
     std::vector<Manifold> m_previousList; // the same, in solving order (for a deterministic keep)
     float m_maxDepthBefore = 0, m_maxDepthAfter = 0;
     static constexpr int kProjectionIterations = 4;
+    static constexpr int kRestitutionSweeps = 8;
+    std::vector<std::pair<size_t, int>> m_bouncing; // (manifold, point) of the points that bounce this step
     // The soft contact for the current sub-step length.
     float m_biasRate = 0, m_massScale = 1, m_impulseScale = 0;
 };
