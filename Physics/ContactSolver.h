@@ -4,11 +4,11 @@
 //   build manifolds per geometry pair (up to 4 points; points that came apart by a hair are kept), match each
 //   point with last step's at the same body-local anchor to start from its impulses; then, for each of n
 //   sub-steps of h = dt/n: add 1/n of what the forces did to the velocities, re-apply the accumulated
-//   impulses (warm start), solve (per manifold: the normal impulses, accumulated and clamped >= 0, then two
-//   Coulomb friction impulses per point, then the normal impulses again), move the bodies by h, and relax
-//   (solve again without the push out). Last, one restitution pass bounces the points that approached faster
-//   than a threshold, and overlap deeper than any resting contact reaches (a fast body found late) is
-//   projected out.
+//   impulses (warm start; an impact's only in the first), solve (per manifold: the normal impulses,
+//   accumulated and clamped >= 0, twice, then two Coulomb friction impulses per point, then the normal
+//   impulses again), move the bodies by h, and relax (solve again without the push out). Last, one
+//   restitution pass bounces the points that approached faster than a threshold, and overlap deeper than any
+//   resting contact reaches (a fast body found late) is projected out.
 // A point's separation is measured anew in every sub-step from its anchors on both bodies. Overlap is pushed
 // out by a soft constraint (a stiff, heavily damped spring at a capped speed) and the relax removes the
 // push's velocity, so no energy is added. There is no slop: a dead band of allowed overlap let a 10-box tower
@@ -105,9 +105,13 @@ private:
     void prepare();
     void startBodies();
     void addForces(float share);
-    void warmStart();
+    void warmStart(bool firstSubstep);
+    // A point's normal target for one sweep: reach v_n = -bias, softly (Catto's soft constraint).
+    struct Target {
+        float bias = 0, massScale = 1, impulseScale = 0;
+    };
     void solveContacts(float h, bool pushOut);
-    void solveNormal(Manifold& m, const float* separation, float h, bool pushOut);
+    void solveNormal(Manifold& m, const Target* target);
     void solveFriction(Manifold& m);
     void moveBodies(float h);
     void applyRestitution();
