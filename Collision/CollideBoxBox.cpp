@@ -73,8 +73,11 @@ int collideBoxBox(const BoxShape& a, const BoxShape& b, ContactManifold& out) {
     auto consider = [&](float ra, float rb, float dist, float len, int idx) -> bool {
         float overlap = (ra + rb - std::fabs(dist)) / len;
         if (overlap < 0.0f) return false;
-        // Face axes win ties (a stable manifold); an edge axis must be clearly shallower.
-        bool better = idx < 6 ? overlap < best : overlap < best * 0.999f - 1e-6f;
+        // Face axes win ties (a stable manifold); an edge axis must be clearly shallower: by 2 % and 0.1 mm.
+        // Between nearly parallel faces an edge axis is often a hair shallower, and taking it reported one
+        // point instead of the overlap area (800 of 2000 resting dominoes in the narrowphase test). The
+        // depth stays within the 3 % of the minimum translation that the GJK reference test allows.
+        bool better = idx < 6 ? overlap < best : overlap < best * 0.98f - 1e-4f;
         if (better) {
             best = overlap;
             bestIdx = idx;
