@@ -163,6 +163,21 @@ TEST(Resolution, PyramidOf210BoxesStandsTenSecondsWithTopDriftUnder5cm) {
     RecordProperty("pyramid_top_drift_m", std::to_string(drift));
 }
 
+TEST(Resolution, ThirtyDominoesAllFallAndComeToRest) {
+    // The first domino is pushed; each knocks over the next (spacing 0.6 m, height 1 m), so every one ends
+    // up lying tilted well past 45 degrees, and once the last has fallen the row is at rest and asleep.
+    SceneFixture f(4); // the default iterations
+    buildDominoes(*f.world, 30);
+    f.seconds(15.0f);
+    int standing = 0;
+    for (iPhysicsFrame* d : f.world->bodies()) {
+        const Matrix& o = d->getDynamics()->orientation;
+        if (o.m22 > 0.7071f) ++standing; // the domino's up axis is still within 45 degrees of vertical
+    }
+    EXPECT_EQ(standing, 0);
+    EXPECT_EQ(f.scene->getAwakeBodyCount(), 0u); // (one that chattered on a flickering contact never slept)
+}
+
 TEST(Resolution, HeavyOnLightStackOfMassRatio100Stands) {
     SceneFixture f;
     f.world->ground();
