@@ -39,7 +39,7 @@ struct ContactPoint {
     Vec3 tangent[2] = {Vec3::UnitX(), Vec3::UnitZ()};    // a fixed basis derived from the normal
     Vec3 anchorA = Vec3::Zero(), anchorB = Vec3::Zero(); // the touching surface points, in each root's frame
     Vec3 rA = Vec3::Zero(), rB = Vec3::Zero();           // from each centre of mass to the contact (world)
-    float depth = 0; // overlap when found; negative for a point kept from last step that has since come apart
+    float depth = 0; // overlap as the detector reported it (the four deepest are kept)
     // The constraint rows, for the normal (0) and the two tangents (1, 2): r x direction on each body, and
     // I^-1 (r x direction), how an impulse along the direction turns each body.
     Vec3 armA[3] = {Vec3::Zero(), Vec3::Zero(), Vec3::Zero()},

@@ -107,8 +107,7 @@ void ContactSolver::keepPoints(const SolverBodyAccess& access,
                                const std::unordered_map<PairKey, size_t, PairKeyHash>& reported) {
     if (m_settings.keepDistance <= 0.0f) return;
     const float keep = m_settings.keepDistance, match2 = m_settings.matchDistance * m_settings.matchDistance;
-    // Appends to m the points of old that m lacks and that are apart by less than keep; rA, rB hold the
-    // world contact point until the bodies are known.
+    // Appends to m the points of old that m lacks and that are apart by less than keep.
     auto keepFrom = [&](const Manifold& old, Manifold& m) {
         const SolverBody &a = m_bodies[m.a], &b = m_bodies[m.b];
         const Vec3 n = m.count ? m.points[0].normal : old.points[0].normal;
@@ -126,24 +125,18 @@ void ContactSolver::keepPoints(const SolverBodyAccess& access,
             ContactPoint p = o;
             p.normal = n;
             tangentBasis(n, p.tangent);
-            p.depth = -separation;
-            p.rA = p.rB = 0.5f * (onA + onB);
+            Vec3 mid = 0.5f * (onA + onB);
+            p.rA = mid - a.com;
+            p.rB = mid - b.com;
             m.points[m.count++] = p;
-        }
-        return reportedCount;
-    };
-    auto toArms = [&](Manifold& m, int from) {
-        for (int i = from; i < m.count; ++i) {
-            m.points[i].rA -= m_bodies[m.a].com;
-            m.points[i].rB -= m_bodies[m.b].com;
         }
     };
     for (Manifold& m : m_manifolds) {
-        auto it = m_previous.find(PairKey{m.g1, m.g2});
-        if (it != m_previous.end()) toArms(m, keepFrom(it->second, m));
+        auto it = m_lastIndex.find(PairKey{m.g1, m.g2});
+        if (it != m_lastIndex.end()) keepFrom(m_last[it->second], m);
     }
     // A pair the detector no longer reports at all (lifted by a hair) keeps its points for one step.
-    for (const Manifold& old : m_previousList) {
+    for (const Manifold& old : m_last) {
         if (old.age > 0 || reported.count(PairKey{old.g1, old.g2}) || !access.alive(old.rootA) ||
             !access.alive(old.rootB))
             continue;
@@ -153,18 +146,16 @@ void ContactSolver::keepPoints(const SolverBodyAccess& access,
         m.a = bodyIndex(old.rootA, access);
         m.b = bodyIndex(old.rootB, access);
         keepFrom(old, m);
-        if (m.count == 0) continue;
-        toArms(m, 0);
-        m_manifolds.push_back(m);
+        if (m.count > 0) m_manifolds.push_back(m);
     }
 }
 
 void ContactSolver::matchPreviousImpulses() {
     const float best0 = m_settings.matchDistance * m_settings.matchDistance;
     for (Manifold& m : m_manifolds) {
-        auto it = m_settings.warmStart ? m_previous.find(PairKey{m.g1, m.g2}) : m_previous.end();
-        if (it == m_previous.end()) continue;
-        const Manifold& old = it->second;
+        auto it = m_settings.warmStart ? m_lastIndex.find(PairKey{m.g1, m.g2}) : m_lastIndex.end();
+        if (it == m_lastIndex.end()) continue;
+        const Manifold& old = m_last[it->second];
         for (int i = 0; i < m.count; ++i) {
             ContactPoint& p = m.points[i];
             // The old point at the same place on body a.
@@ -187,14 +178,12 @@ void ContactSolver::matchPreviousImpulses() {
     }
 }
 
+// This step's manifolds become last step's, moved rather than copied (every one has a point).
 void ContactSolver::storeImpulses() {
-    m_previous.clear();
-    m_previousList.clear();
-    for (const Manifold& m : m_manifolds) {
-        if (m.count == 0) continue;
-        m_previous.emplace(PairKey{m.g1, m.g2}, m);
-        m_previousList.push_back(m);
-    }
+    m_last.swap(m_manifolds);
+    m_manifolds.clear();
+    m_lastIndex.clear();
+    for (size_t i = 0; i < m_last.size(); ++i) m_lastIndex.emplace(PairKey{m_last[i].g1, m_last[i].g2}, i);
 }
 
 } // namespace physics

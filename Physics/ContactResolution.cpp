@@ -32,7 +32,7 @@ SolverBody SceneBodyAccess::load(RBDynamics* root) const {
     // rocking stacks). Velocities are converted at the integrated pose, where they were written.
     Quat q0 = body->previousRotation();
     b.com = toEigen(body->previousPosition()) - q0 * m_scratch.rootOffset;
-    b.v -= b.w.cross(toQuat(root->orientation) * m_scratch.rootOffset);
+    b.v -= b.w.cross(b.rotation * m_scratch.rootOffset);
     b.dv = body->forceDv;
     b.dw = body->forceDw;
     b.invMass = m_scratch.invMass;

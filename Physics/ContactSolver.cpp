@@ -343,8 +343,8 @@ void ContactSolver::measureOverlap() {
 }
 
 void ContactSolver::clear() {
-    m_previous.clear();
-    m_previousList.clear();
+    m_last.clear();
+    m_lastIndex.clear();
     m_manifolds.clear();
     m_bodies.clear();
     m_bodyIndex.clear();

@@ -84,12 +84,11 @@ public:
     // Forgets last step's impulses (no warm start next step).
     void clear();
 
-    size_t manifoldCount() const { return m_manifolds.size(); }
     // Deepest overlap reported to the last solve / left after it.
     float maxPenetrationBefore() const { return m_maxDepthBefore; }
     float maxPenetrationAfter() const { return m_maxDepthAfter; }
-    // The bodies touching in the last step, as pairs of roots (for islands and sleeping).
-    const std::vector<Manifold>& manifolds() const { return m_manifolds; }
+    // The manifolds of the last solve, with their impulses.
+    const std::vector<Manifold>& manifolds() const { return m_last; }
     // The bodies of the last solve.
     const std::vector<SolverBody>& bodies() const { return m_bodies; }
 
@@ -121,9 +120,9 @@ private:
     SolverSettings m_settings;
     std::vector<SolverBody> m_bodies;
     std::unordered_map<const RBDynamics*, int> m_bodyIndex;
-    std::vector<Manifold> m_manifolds;
-    std::unordered_map<PairKey, Manifold, PairKeyHash> m_previous;
-    std::vector<Manifold> m_previousList; // the same, in solving order (for a deterministic keep)
+    std::vector<Manifold> m_manifolds; // this step's, while solving
+    std::vector<Manifold> m_last;      // last step's, in solving order (for warm starting and keeping)
+    std::unordered_map<PairKey, size_t, PairKeyHash> m_lastIndex; // into m_last
     float m_maxDepthBefore = 0, m_maxDepthAfter = 0;
     static constexpr int kProjectionIterations = 4;
     static constexpr int kRestitutionSweeps = 8;
