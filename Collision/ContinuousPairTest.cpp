@@ -22,6 +22,7 @@
 // evaluations more; a sampled pair up to n - 1 more exact tests (plus the shapes rebuilt at each sample).
 // With the cap, a box pair whose relative path per step exceeds 64 * (half the smaller box's thinnest
 // dimension) is sampled more coarsely than that.
+#include "MathEigen.h"
 #include "SimpleCollisionSpace.h"
 
 #include <cmath>

@@ -2,6 +2,7 @@
 // all-pairs space. The pair tests are in ContinuousPairTest.cpp, listeners in SpaceListeners.cpp, queries
 // in SpaceQueries.cpp.
 #include "SimpleCollisionSpace.h"
+#include "MathEigen.h"
 #include "iRigidBody.h"
 #include "iSimpleCollisionSpace.h"
 #include "iUtilities.h"

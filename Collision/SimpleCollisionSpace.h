@@ -17,7 +17,9 @@
 
 #include "CollisionGeometry.h"
 #include "Narrowphase.h"
+#include "iCollisionQueries.h"
 #include "iCollisionSpace.h"
+#include "iContactFeatures.h"
 
 #include <list>
 #include <vector>
@@ -25,7 +27,7 @@
 class iRigidBody;
 class iCollisionListener;
 
-class SimpleCollisionSpace final : public iCollisionSpace {
+class SimpleCollisionSpace final : public iCollisionSpace, public iCollisionQueries, public iContactFeatures {
 public:
     explicit SimpleCollisionSpace(size_t samplesPerSecond);
 

@@ -11,11 +11,33 @@
 //  * Matrix is 4x4, row-major (m11 m12 m13 m14 / m21 ...). Rotation matrices are orthonormal; the
 //    physics and collision code never accept scale inside an orientation (see orthoNormalize).
 //
-// These are plain value types with the framework's names. MathDefinitions.h implements them on Eigen by
-// mapping the storage; callers never see Eigen. Include MathDefinitions.h to use the operations.
+// A superset of the course framework's MathDeclarations.h (fwk4gps): every type, member and macro the
+// framework's file has (Vector, Matrix, Plane, Colour, Reflectivity, SQR, DEGTORAD, RADTODEG, LIMIT_RANGE,
+// COLOUR_TO_ARGB, DEFAULT_SHININESS), with the same meanings, plus what the physics needs. A course project
+// can overwrite its own copy with this one and keep compiling. Plain C++: no Eigen here or in
+// MathDefinitions.h; the few heavy operations (inverse, orthoNormalize, inertia) live in GuardianMath.cpp.
+// Supported: MODEL_Z_AXIS == NEAR_TO_FAR (the framework's default); see MathDefinitions.h.
 #pragma once
 
+#include <cmath>
 #include <cstddef>
+
+#ifndef M_PI
+#define M_PI 3.14159265358979323846
+#endif
+
+// --- the framework's macros ---
+#define DEFAULT_SHININESS 10 // material reflectivity: Reflectivity's default power
+#define SQR(x) ((x) * (x))
+#define DEGTORAD(x) (((x)*M_PI) / 180.0f)
+#define RADTODEG(x) (((x)*180.0f) / M_PI)
+#define LIMIT_RANGE(low, value, high)                                                                        \
+    {                                                                                                        \
+        if (value < low)                                                                                     \
+            value = low;                                                                                     \
+        else if (value > high)                                                                               \
+            value = high;                                                                                    \
+    }
 
 struct Matrix;
 
@@ -89,8 +111,8 @@ struct Matrix {
     Matrix() : Matrix(0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0) {}
     // diag(d, d, d, 1). Deliberately implicit, as in the course framework: Matrix m = 1; is the identity.
     Matrix(float d) : Matrix(d, 0, 0, 0, 0, d, 0, 0, 0, 0, d, 0, 0, 0, 0, 1) {}
-    // diag(v.x, v.y, v.z, 1)
-    explicit Matrix(const Vector& v) : Matrix(v.x, 0, 0, 0, 0, v.y, 0, 0, 0, 0, v.z, 0, 0, 0, 0, 1) {}
+    // diag(v.x, v.y, v.z, 1); implicit, as in the course framework.
+    Matrix(const Vector& v) : Matrix(v.x, 0, 0, 0, 0, v.y, 0, 0, 0, 0, v.z, 0, 0, 0, 0, 1) {}
     Matrix(float a11, float a12, float a13, float a14, float a21, float a22, float a23, float a24, float a31,
            float a32, float a33, float a34, float a41, float a42, float a43, float a44)
         : m11(a11), m12(a12), m13(a13), m14(a14), m21(a21), m22(a22), m23(a23), m24(a24), m31(a31), m32(a32),
@@ -137,8 +159,20 @@ Matrix operator+(const Matrix& a, const Matrix& b);
 Matrix operator-(const Matrix& a, const Matrix& b);
 Matrix operator*(const Matrix& a, float s);
 Vector operator*(const Vector& v, const Matrix& m); // as a point: p * M, translation applied
+// M * p as a column vector with the fourth column as translation (the framework has it; the physics does
+// not use it: the framework's convention is p * M).
+Vector operator*(const Matrix& m, const Vector& v);
 bool operator==(const Matrix& a, const Matrix& b);
 inline bool operator!=(const Matrix& a, const Matrix& b) { return !(a == b); }
+
+// The framework's camera and scaling helpers (MathDefinitions.h), kept for course code that draws.
+Matrix& scale(Matrix& m, float x, float y, float z); // sets m to diag(x, y, z, 1)
+Matrix& scale(Matrix& m, const Vector& v);
+Matrix view(const Vector& p, const Vector& d, const Vector& u); // eye p, looking at d, up u
+Matrix projection(float fov, float aspect, float nearCp, float farCp);
+Matrix projection(float minx, float maxx, float miny, float maxy, float nearCp, float farCp);
+Matrix projToRhs(const Matrix& m);
+Matrix orthographic(int w, int h);
 
 // Generators (pure rotations/translations, no state).
 Matrix rotatex(float rad);
@@ -167,6 +201,38 @@ Matrix getSphereInertiaTensor(float mass, float radius);
 Matrix getInertiaTensor(const PointMass* points, size_t n);
 // Centre of mass of point masses (zero when the total mass is zero).
 Vector getCentreOfMass(const PointMass* points, size_t n);
+
+// --- the framework's drawing types ---
+// A plane n . p + d = 0. onPositiveSide keeps the framework's test (n . v + d < 0), which is what course
+// code that calls it expects.
+struct Plane {
+    Vector n;
+    float d;
+    Plane(const Vector& v, float c) : n(v), d(c) {}
+    bool onPositiveSide(const Vector& v) { return dot(n, v) + d < 0; }
+    Vector normal() const { return n; }
+    float constant() const { return d; }
+};
+
+struct Colour {
+    float r, g, b, a;
+    Colour(float red = 0, float grn = 0, float blu = 0, float alp = 1) : r(red), g(grn), b(blu), a(alp) {}
+    operator const float*() const { return &r; }
+};
+
+#define COLOUR_TO_ARGB(c)                                                                                    \
+    ((unsigned)((c.a) * 255) << 24 | (unsigned)((c.r) * 255) << 16 | (unsigned)((c.g) * 255) << 8 |          \
+     (unsigned)((c.b) * 255))
+
+// Ambient 70 % of the colour, diffuse the colour, white specular; power 0 means DEFAULT_SHININESS.
+struct Reflectivity {
+    Colour ambient, diffuse, specular;
+    float power;
+    Reflectivity(Colour c = Colour(), float p = 0)
+        : ambient(c.r * 0.7f, c.g * 0.7f, c.b * 0.7f, c.a), diffuse(c), specular(1, 1, 1, c.a),
+          power(p != 0 ? p : float(DEFAULT_SHININESS)) {}
+    bool translucent() const { return ambient.a != 1 || diffuse.a != 1 || specular.a != 1; }
+};
 
 // The definitions come with the declarations so that no translation unit can use one without the other.
 #include "MathDefinitions.h"

@@ -1,42 +1,26 @@
-// MathDefinitions.h - Vector and Matrix operations and the inertia helpers, implemented on Eigen.
+// MathDefinitions.h - the inline operations of Vector and Matrix, and the framework's camera helpers.
 //
-// Header-only so that the Interfaces target stays an INTERFACE library and each drop-in package carries
-// its math with it. Matrix storage is mapped as a row-major Eigen 4x4; Vector as an Eigen 3-vector.
-// See MathDeclarations.h for the conventions (row vectors, translation in m41..m43, left-handed, y up).
+// Plain C++, as the course framework's own MathDefinitions.h, of which this is a superset: a course project
+// may overwrite its copy with this one. The few operations that need a numerical library (general inverse,
+// nearest rotation, inertia of point sets) are declared in MathDeclarations.h and defined once, with Eigen
+// inside, in GuardianMath.cpp. See MathDeclarations.h for the conventions (row vectors, translation in
+// m41..m43, left-handed, y up).
 #pragma once
 
 #include "MathDeclarations.h"
 
-#include <Eigen/Dense>
 #include <cmath>
 
-namespace gmath {
-using Mat4 = Eigen::Matrix<float, 4, 4, Eigen::RowMajor>;
-using Mat3 = Eigen::Matrix3f;
-static_assert(sizeof(Vector) == 3 * sizeof(float), "Vector must be three packed floats");
-static_assert(sizeof(Matrix) == 16 * sizeof(float), "Matrix must be sixteen packed floats");
-
-inline Eigen::Map<Mat4> map(Matrix& m) { return Eigen::Map<Mat4>(m.data()); }
-inline Eigen::Map<const Mat4> map(const Matrix& m) { return Eigen::Map<const Mat4>(m.data()); }
-inline Eigen::Map<Eigen::Vector3f> map(Vector& v) { return Eigen::Map<Eigen::Vector3f>(&v.x); }
-inline Eigen::Map<const Eigen::Vector3f> map(const Vector& v) {
-    return Eigen::Map<const Eigen::Vector3f>(&v.x);
-}
-inline Vector toVector(const Eigen::Vector3f& v) { return Vector(v.x(), v.y(), v.z()); }
-inline Matrix toMatrix(const Mat4& e) {
-    Matrix m;
-    map(m) = e;
-    return m;
-}
-// The upper-left 3x3 block (rotation or inertia tensor) as a column-major Eigen matrix.
-inline Mat3 block3(const Matrix& m) { return map(m).topLeftCorner<3, 3>(); }
-// A Matrix holding r in its 3x3 block, zero translation and m44 = 1.
-inline Matrix fromBlock3(const Mat3& r) {
-    Matrix m(1);
-    map(m).topLeftCorner<3, 3>() = r;
-    return m;
-}
-} // namespace gmath
+// The framework's GeneralConstants.h (MODEL_Z_AXIS) comes along, as with the framework's own file.
+#if defined(__has_include)
+#if __has_include("GeneralConstants.h")
+#include "GeneralConstants.h"
+#endif
+#endif
+#if defined(MODEL_Z_AXIS)
+static_assert(MODEL_Z_AXIS == 1,
+              "Guardian Physics supports MODEL_Z_AXIS NEAR_TO_FAR (the framework default) only");
+#endif
 
 // --- Vector ---
 inline float Vector::length() const { return std::sqrt(lengthSquared()); }
@@ -56,22 +40,22 @@ inline Vector projectOnTo(const Vector& a, const Vector& b) {
 // --- Matrix members ---
 inline Matrix& Matrix::isIdentity() { return *this = Matrix(1); }
 inline Matrix& Matrix::operator+=(const Matrix& a) {
-    gmath::map(*this) += gmath::map(a);
+    for (int i = 0; i < 16; ++i) data()[i] += a.data()[i];
     return *this;
 }
 inline Matrix& Matrix::operator-=(const Matrix& a) {
-    gmath::map(*this) -= gmath::map(a);
+    for (int i = 0; i < 16; ++i) data()[i] -= a.data()[i];
     return *this;
 }
 inline Matrix& Matrix::operator*=(const Matrix& a) { return *this = *this * a; }
-inline Matrix Matrix::transpose() const { return gmath::toMatrix(gmath::map(*this).transpose()); }
-inline Matrix Matrix::inverse() const {
-    gmath::Mat4 inv;
-    bool invertible = false;
-    gmath::map(*this).computeInverseWithCheck(inv, invertible, 1e-12f);
-    return invertible ? gmath::toMatrix(inv) : *this;
+inline Matrix Matrix::transpose() const {
+    return Matrix(m11, m21, m31, m41, m12, m22, m32, m42, m13, m23, m33, m43, m14, m24, m34, m44);
 }
-inline bool Matrix::isFinite() const { return gmath::map(*this).allFinite(); }
+inline bool Matrix::isFinite() const {
+    for (int i = 0; i < 16; ++i)
+        if (!std::isfinite(data()[i])) return false;
+    return true;
+}
 inline Matrix& Matrix::translate(float x, float y, float z) { return *this = *this * ::translation(x, y, z); }
 // Applies r about this transform's own origin: T = T * r with the translation row restored.
 inline Matrix& Matrix::rotate(const Matrix& r) {
@@ -88,12 +72,16 @@ inline Matrix& Matrix::rotatez(float rad) { return rotate(::rotatez(rad)); }
 inline Matrix& Matrix::rotate(const Vector& axis, float rad) { return rotate(::rotate(axis, rad)); }
 inline Matrix& Matrix::scale(float x, float y, float z) { return rotate(Matrix(Vector(x, y, z))); }
 inline Matrix& Matrix::orient(const Matrix& rot) {
-    gmath::map(*this).topLeftCorner<3, 3>() = gmath::map(rot).topLeftCorner<3, 3>();
+    for (int r = 0; r < 3; ++r)
+        for (int c = 0; c < 3; ++c) (*this)(r, c) = rot(r, c);
     return *this;
 }
-inline Matrix Matrix::rotation() const { return gmath::fromBlock3(gmath::block3(*this)); }
+inline Matrix Matrix::rotation() const {
+    return Matrix(m11, m12, m13, 0, m21, m22, m23, 0, m31, m32, m33, 0, 0, 0, 0, 1);
+}
 inline Vector Matrix::direction(const Vector& v) const {
-    return gmath::toVector(gmath::block3(*this).transpose() * gmath::map(v));
+    return Vector(v.x * m11 + v.y * m21 + v.z * m31, v.x * m12 + v.y * m22 + v.z * m32,
+                  v.x * m13 + v.y * m23 + v.z * m33);
 }
 inline Vector Matrix::direction(char axis) const {
     int row = axis == 'x' || axis == 'X' ? 0 : axis == 'y' || axis == 'Y' ? 1 : 2;
@@ -102,21 +90,31 @@ inline Vector Matrix::direction(char axis) const {
 
 // --- free operators ---
 inline Matrix operator*(const Matrix& a, const Matrix& b) {
-    return gmath::toMatrix(gmath::map(a) * gmath::map(b));
+    Matrix out;
+    for (int r = 0; r < 4; ++r)
+        for (int c = 0; c < 4; ++c)
+            out(r, c) = a(r, 0) * b(0, c) + a(r, 1) * b(1, c) + a(r, 2) * b(2, c) + a(r, 3) * b(3, c);
+    return out;
 }
-inline Matrix operator+(const Matrix& a, const Matrix& b) {
-    return gmath::toMatrix(gmath::map(a) + gmath::map(b));
+inline Matrix operator+(const Matrix& a, const Matrix& b) { return Matrix(a) += b; }
+inline Matrix operator-(const Matrix& a, const Matrix& b) { return Matrix(a) -= b; }
+inline Matrix operator*(const Matrix& a, float s) {
+    Matrix out(a);
+    for (int i = 0; i < 16; ++i) out.data()[i] *= s;
+    return out;
 }
-inline Matrix operator-(const Matrix& a, const Matrix& b) {
-    return gmath::toMatrix(gmath::map(a) - gmath::map(b));
+// Row vector (v, 1) times M, no perspective divide.
+inline Vector operator*(const Vector& v, const Matrix& m) { return m.direction(v) + m.position(); }
+inline Vector operator*(const Matrix& a, const Vector& b) {
+    return Vector(a.m11 * b.x + a.m12 * b.y + a.m13 * b.z + a.m14,
+                  a.m21 * b.x + a.m22 * b.y + a.m23 * b.z + a.m24,
+                  a.m31 * b.x + a.m32 * b.y + a.m33 * b.z + a.m34);
 }
-inline Matrix operator*(const Matrix& a, float s) { return gmath::toMatrix(gmath::map(a) * s); }
-inline Vector operator*(const Vector& v, const Matrix& m) {
-    // Row vector (v, 1) times M, no perspective divide.
-    return gmath::toVector(gmath::block3(m).transpose() * gmath::map(v) +
-                           Eigen::Vector3f(m.m41, m.m42, m.m43));
+inline bool operator==(const Matrix& a, const Matrix& b) {
+    for (int i = 0; i < 16; ++i)
+        if (a.data()[i] != b.data()[i]) return false;
+    return true;
 }
-inline bool operator==(const Matrix& a, const Matrix& b) { return gmath::map(a) == gmath::map(b); }
 
 // --- generators ---
 // Rodrigues' rotation written for row vectors: p * rotate(k, a) = p cos a + (k x p) sin a + k (k.p)(1 - cos
@@ -124,9 +122,10 @@ inline bool operator==(const Matrix& a, const Matrix& b) { return gmath::map(a) 
 inline Matrix rotate(const Vector& axis, float rad) {
     Vector k = axis.normalize();
     if (k.lengthSquared() == 0.0f) return Matrix(1);
-    // Eigen's AngleAxis is the column-vector form; its transpose is the row-vector form.
-    gmath::Mat3 r = Eigen::AngleAxisf(rad, gmath::map(k)).toRotationMatrix();
-    return gmath::fromBlock3(r.transpose());
+    float c = std::cos(rad), s = std::sin(rad), t = 1.0f - c;
+    return Matrix(t * k.x * k.x + c, t * k.x * k.y + k.z * s, t * k.x * k.z - k.y * s, 0,
+                  t * k.x * k.y - k.z * s, t * k.y * k.y + c, t * k.y * k.z + k.x * s, 0,
+                  t * k.x * k.z + k.y * s, t * k.y * k.z - k.x * s, t * k.z * k.z + c, 0, 0, 0, 0, 1);
 }
 inline Matrix rotatex(float rad) { return rotate(Vector(1, 0, 0), rad); }
 inline Matrix rotatey(float rad) { return rotate(Vector(0, 1, 0), rad); }
@@ -141,26 +140,36 @@ inline Matrix translation(float x, float y, float z) {
 inline Vector position(const Matrix& m) { return m.position(); }
 inline Matrix rotation(const Matrix& m) { return m.rotation(); }
 
-inline Matrix orthoNormalize(const Matrix& m) {
-    // Polar decomposition via SVD: the orthonormal factor U V^T is the nearest rotation in Frobenius norm.
-    Eigen::JacobiSVD<gmath::Mat3> svd(gmath::block3(m), Eigen::ComputeFullU | Eigen::ComputeFullV);
-    gmath::Mat3 u = svd.matrixU();
-    gmath::Mat3 r = u * svd.matrixV().transpose();
-    if (r.determinant() < 0.0f) { // reflection: flip the least significant direction
-        u.col(2) = -u.col(2);
-        r = u * svd.matrixV().transpose();
-    }
-    Matrix out = gmath::fromBlock3(r);
-    out.m41 = m.m41;
-    out.m42 = m.m42;
-    out.m43 = m.m43;
-    return out;
+// --- the framework's camera and scaling helpers ---
+inline Matrix& scale(Matrix& m, float x, float y, float z) { return m = Matrix(Vector(x, y, z)); }
+inline Matrix& scale(Matrix& m, const Vector& v) { return scale(m, v.x, v.y, v.z); }
+inline Matrix view(const Vector& p, const Vector& d, const Vector& u) {
+    Vector z = normal(d - p);
+    Vector x = normal(cross(u, z));
+    Vector y = cross(z, x);
+    return Matrix(x.x, y.x, z.x, 0, x.y, y.y, z.y, 0, x.z, y.z, z.z, 0, -dot(x, p), -dot(y, p), -dot(z, p),
+                  1);
 }
-inline bool isRotation(const Matrix& m, float tol) {
-    gmath::Mat3 r = gmath::block3(m);
-    if (!r.allFinite()) return false;
-    return (r * r.transpose() - gmath::Mat3::Identity()).cwiseAbs().maxCoeff() <= tol &&
-           std::fabs(r.determinant() - 1.0f) <= tol;
+inline Matrix projection(float fov, float aspect, float nearCp, float farCp) {
+    float sy = 1.0f / std::tan(fov * 0.5f);
+    float sx = sy / aspect;
+    float sz = farCp / (farCp - nearCp);
+    return Matrix(sx, 0, 0, 0, 0, sy, 0, 0, 0, 0, sz, 1, 0, 0, -nearCp * sz, 0);
+}
+inline Matrix projection(float minx, float maxx, float miny, float maxy, float nearCp, float farCp) {
+    float sy = 2 * nearCp / (maxy - miny);
+    float sx = 2 * nearCp / (maxx - minx);
+    float zx = (minx + maxx) / (maxx - minx);
+    float zy = (miny + maxy) / (maxy - miny);
+    float sz = farCp / (farCp - nearCp);
+    return Matrix(sx, 0, 0, 0, 0, sy, 0, 0, zx, zy, sz, 1, 0, 0, -nearCp * sz, 0);
+}
+inline Matrix projToRhs(const Matrix& m) {
+    return Matrix(m.m11, m.m12, m.m13, 0, m.m21, m.m22, m.m23, 0, m.m31, m.m32, m.m33, -m.m43, m.m41, m.m42,
+                  -m.m34, 0);
+}
+inline Matrix orthographic(int w, int h) {
+    return Matrix(2.f / float(w), 0, 0, 0, 0, 2.f / float(h), 0, 0, 0, 0, -1, 0, -1, -1, 0, 1);
 }
 
 // --- inertia helpers ---
@@ -172,27 +181,4 @@ inline Matrix getBoxInertiaTensor(float mass, const Vector& h) {
 }
 inline Matrix getSphereInertiaTensor(float mass, float radius) {
     return Matrix(0.4f * mass * radius * radius);
-}
-inline Vector getCentreOfMass(const PointMass* points, size_t n) {
-    double total = 0, cx = 0, cy = 0, cz = 0;
-    for (size_t i = 0; points && i < n; ++i) {
-        total += points[i].mass;
-        cx += double(points[i].mass) * points[i].position.x;
-        cy += double(points[i].mass) * points[i].position.y;
-        cz += double(points[i].mass) * points[i].position.z;
-    }
-    if (total <= 0) return Vector();
-    return Vector(float(cx / total), float(cy / total), float(cz / total));
-}
-inline Matrix getInertiaTensor(const PointMass* points, size_t n) {
-    // I = sum m (|r|^2 E - r r^T) with r measured from the centre of mass (the original measured from the
-    // local origin, which is what "exaggerated results" came from). Accumulated in double.
-    Vector c = getCentreOfMass(points, n);
-    Eigen::Matrix3d inertia = Eigen::Matrix3d::Zero();
-    for (size_t i = 0; points && i < n; ++i) {
-        Eigen::Vector3d r = gmath::map(points[i].position - c).cast<double>();
-        inertia +=
-            double(points[i].mass) * (r.squaredNorm() * Eigen::Matrix3d::Identity() - r * r.transpose());
-    }
-    return gmath::fromBlock3(inertia.cast<float>());
 }

@@ -2,7 +2,7 @@
 //
 // A plain struct whose public properties a game edits directly (body->getDynamics().velocity += ...). The
 // simulator reads and writes it every step; a collision space only reads it. Both packages need it, so it
-// lives here, header-only.
+// lives here; its functions are in RBDynamics.cpp.
 //
 // Frames: an unattached body's position, orientation, velocities and momentum are in world space. A body
 // attached to another (attachTo) stores position and orientation relative to its parent's centre of mass
@@ -22,13 +22,17 @@
 #pragma once
 
 #include "MathDeclarations.h"
-#include "ModelSettings.h"
+#include "PhysicsConstants.h"
 
 enum PhysicsType {
     PHYS_Falling,      // moves under forces and gravity (the default)
     PHYS_Floating,     // moves under forces, feels no gravity
     PHYS_FixedInSpace, // never moves; collisions between two fixed bodies are never tested
 };
+
+// True when the 3x3 block of i is finite, symmetric and positive definite: a valid inertia tensor (or
+// inverse tensor).
+bool isValidInertiaTensor(const Matrix& i);
 
 struct RBDynamics {
     // --- properties (seed names and meanings) ---
@@ -131,5 +135,3 @@ private:
 
     void unlinkFromParent();
 };
-
-#include "RBDynamicsDefinitions.h"

@@ -20,6 +20,9 @@ public:
     virtual bool addBox(const Vector& offset, const Matrix& rotation, const Vector& halfExtents) = 0;
     virtual size_t getNumChildren() const = 0;
     virtual void clearChildren() = 0;
+
+protected:
+    ~iCCompound() = default;
 };
 
 extern "C" iCollisionGeometry* CreateCCompound(iRigidBody* rb = NULL);

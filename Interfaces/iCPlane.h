@@ -16,6 +16,9 @@ public:
     virtual float getOffset() const = 0;
     // A normal that is zero or not finite, or an offset that is not finite, is refused with error().
     virtual void setPlane(const Vector& normal, float offset) = 0;
+
+protected:
+    ~iCPlane() = default;
 };
 
 // Returns nullptr (after error()) when the normal is zero or not finite or the offset not finite. The

@@ -39,4 +39,8 @@ public:
     virtual void suspend() const = 0;
     virtual void release() const = 0;
     virtual void Delete() const = 0;
+
+protected:
+    // Not deleted through the interface: call Delete().
+    ~iCollisionGeometry() = default;
 };

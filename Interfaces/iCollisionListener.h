@@ -16,4 +16,7 @@ public:
     // world space, points toward other; hitLocation: world-space contact point (for several contact points,
     // their average: the centre of the overlap area).
     virtual void HitWall(iRigidBody* other, Vector hitNormal, Vector hitLocation) = 0;
+
+protected:
+    ~iCollisionListener() = default; // the game owns its listeners; bodies never delete them
 };

@@ -2,15 +2,15 @@
 // default space that new geometries join.
 //
 // A space holds geometries and, on populateContactList(delta), finds every touching pair. It is not a
-// coordinator: call it when you want contacts (the physics scene calls it every step).
+// coordinator: call it when you want contacts (the physics scene calls it every step). The interface is
+// exactly the seed's; what the simple space adds (ray and overlap queries, contact feature ids) is on
+// interfaces of its own: iCollisionQueries.h, iContactFeatures.h.
 #pragma once
 
 #include <cstddef>
 #include <list>
-#include <vector>
 
 #include "MathDeclarations.h"
-#include "iCollisionQueries.h"
 
 class iCollisionGeometry;
 
@@ -41,41 +41,14 @@ public:
     virtual const CollisionContact* getContactList() const = 0;
     virtual size_t getNumContacts() const = 0;
 
-    // --- extensions (not in the seed; the defaults say "not supported") ---
-    // One id per contact, parallel to getContactList(): which features of the two shapes touch. The same
-    // pair of features touching on the next call gives the same id (with the same g1, g2), so a solver can
-    // match contacts across frames to warm-start them. nullptr when the space does not provide them.
-    virtual const unsigned* getContactFeatureIds() const { return nullptr; }
-    // Closest hit along origin + t * direction, 0 <= t <= maxDistance (direction need not be unit; a zero
-    // direction is refused with error()). True on a hit.
-    virtual bool rayCast(const Vector& origin, const Vector& direction, float maxDistance, RayHit& hit) {
-        (void)origin, (void)direction, (void)maxDistance, (void)hit;
-        return false;
-    }
-    // Overlap queries: clear out, then fill it with every geometry that overlaps the given volume (each
-    // geometry once). Return out.size().
-    virtual size_t overlapSphere(const Vector& centre, float radius, std::vector<iCollisionGeometry*>& out) {
-        (void)centre, (void)radius;
-        out.clear();
-        return 0;
-    }
-    // orientation: row-vector rotation (box local -> world).
-    virtual size_t overlapBox(const Vector& centre, const Matrix& orientation, const Vector& halfExtents,
-                              std::vector<iCollisionGeometry*>& out) {
-        (void)centre, (void)orientation, (void)halfExtents;
-        out.clear();
-        return 0;
-    }
-    virtual size_t overlapAABB(const Vector& min, const Vector& max, std::vector<iCollisionGeometry*>& out) {
-        (void)min, (void)max;
-        out.clear();
-        return 0;
-    }
-
     // termination functions
     virtual void suspend() const = 0;
     virtual void release() const = 0;
     virtual void Delete() const = 0;
+
+protected:
+    // Not deleted through the interface: call Delete().
+    ~iCollisionSpace() = default;
 };
 
 namespace guardian_detail {

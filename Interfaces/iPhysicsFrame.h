@@ -5,8 +5,8 @@
 // The scene deletes bodies on shutdown but not physics frames' bodies: deleting the scene first only takes
 // the body out of the scene (the PhysicsFrame keeps working, unsimulated); Delete() on getRB() is refused.
 // The game deletes its PhysicsFrames, which deletes their bodies (safe inside update: deferred).
-// clone() makes a new frame (same T and parent) owning a copy of the body (dynamics, listeners) in the same
-// scene.
+// clone() makes a new root frame at the body's pose owning a copy of the body (dynamics, listeners) in the
+// same scene.
 #pragma once
 
 #include "Frame.h"
@@ -23,6 +23,10 @@ public:
     virtual void suspend() const = 0;
     virtual void release() const = 0;
     virtual void Delete() const = 0;
+
+protected:
+    // Not deleted through the interface: call Delete() (it deletes the body too).
+    ~iPhysicsFrame() override = default;
 };
 
 extern "C" iPhysicsFrame* CreatePhysicsFrame();

@@ -43,6 +43,10 @@ public:
     virtual void release() const = 0;
     // Deletes this body and its RBDynamics; never the attached frame or the listeners.
     virtual void Delete() const = 0;
+
+protected:
+    // Not deleted through the interface: call Delete(). A game's own body class may have any destructor.
+    ~iRigidBody() = default;
 };
 
 // Creates a body bound to frame o (may be nullptr) and adds it to the active physics scene, if any.

@@ -1,5 +1,6 @@
 // BodyValidation.cpp - the validity rules of a body's state (see RBDynamics.h, "Validation").
 #include "BodyValidation.h"
+#include "MathEigen.h"
 
 #include <cmath>
 
@@ -41,7 +42,7 @@ const wchar_t* checkDynamics(RBDynamics& d, const Matrix& knownInertia, const Ma
     if (const wchar_t* why = checkOrientation(d.orientation)) return why;
     if (d.getInertiaTensor() != knownInertia || d.getInverseInertiaTensor() != knownInverse) {
         // Edited through the reference: accept the tensor if it is valid and its inverse matches it.
-        if (!guardian_detail::isValidInertia(d.getInertiaTensor()))
+        if (!isValidInertiaTensor(d.getInertiaTensor()))
             return L"inertia tensor is not finite, symmetric and positive definite";
         gmath::Mat3 product =
             gmath::block3(d.getInertiaTensor()) * gmath::block3(d.getInverseInertiaTensor());

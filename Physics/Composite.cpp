@@ -1,6 +1,7 @@
 // Composite.cpp - mass properties of an attachment chain, gathered once per step before integrating it.
 #include "Composite.h"
 
+#include "MathEigen.h"
 #include "RigidBody.h"
 
 namespace physics {

@@ -3,6 +3,7 @@
 // point at the same place so that it starts from that point's impulses (warm starting).
 #include "ContactSolver.h"
 
+#include "MathEigen.h"
 #include "RBDynamics.h"
 #include "iCollisionGeometry.h"
 #include "iCollisionSpace.h"

@@ -2,6 +2,7 @@
 #include "ContactResolution.h"
 
 #include "Integrators.h"
+#include "MathEigen.h"
 #include "RigidBody.h"
 #include "iCollisionGeometry.h"
 #include "iCollisionSpace.h"

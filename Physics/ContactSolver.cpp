@@ -1,6 +1,7 @@
 // ContactSolver.cpp - the sub-stepped solve: soft contacts, Coulomb friction, warm starting, restitution.
 #include "ContactSolver.h"
 
+#include "MathEigen.h"
 #include "RBDynamics.h"
 #include "iCollisionSpace.h"
 

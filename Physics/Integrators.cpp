@@ -5,6 +5,7 @@
 // is constant and only the rotation moves.
 #include "Integrators.h"
 
+#include "MathEigen.h"
 #include "RigidBody.h"
 #include "iForceGenerator.h"
 

@@ -5,7 +5,7 @@
 // Eigen quaternion represents. Inertia tensors are symmetric, so they need no transpose.
 #pragma once
 
-#include "MathDefinitions.h"
+#include "MathEigen.h"
 
 #include <Eigen/Geometry>
 

@@ -22,12 +22,10 @@ public:
     iRigidBody* getRB() const override { return m_body; }
     RBDynamics* getDynamics() const override { return &m_body->getDynamics(); }
 
-    // A new frame with the same T and parent, owning a copy of the body (dynamics, listeners, generators)
-    // in the same scene as this one's.
+    // A new root frame at the body's pose, owning a copy of the body (dynamics, listeners, generators) in
+    // the same scene as this one's. (A course framework's Frame does not expose its parent to copy.)
     iPhysicsFrame* clone() const override {
         PhysicsFrame* copy = new PhysicsFrame();
-        copy->m_T = m_T;
-        copy->m_parent = m_parent;
         RigidBody* b = copy->m_body;
         if (b->scene() != m_body->scene()) {
             if (b->scene()) b->scene()->remove(b);

@@ -2,9 +2,9 @@
 #include "PhysicsScene.h"
 
 #include "Integrators.h"
+#include "MathEigen.h"
 #include "RigidBody.h"
 #include "iCollisionSpace.h"
-#include "iContext.h"
 #include "iFixedUpdater.h"
 #include "iUtilities.h"
 
@@ -23,16 +23,7 @@ constexpr int MAX_STEP_RATE = 10000;
 
 PhysicsScene* PhysicsScene::active() { return scenes().empty() ? nullptr : scenes().back(); }
 
-PhysicsScene::PhysicsScene(iContext* c) {
-    if (c) { // unset keys keep the defaults; set but invalid ones are reported and ignored
-        if (c->isSet(GF_PHYS_STEP_RATE)) setStepRate(c->get(GF_PHYS_STEP_RATE));
-        if (c->isSet(GF_PHYS_MAX_STEPS)) setMaxStepsPerUpdate(c->get(GF_PHYS_MAX_STEPS));
-        if (c->isSet(GF_PHYS_INTEGRATOR)) setIntegrator(Integrator(c->get(GF_PHYS_INTEGRATOR)));
-        if (c->isSet(GF_PHYS_GRAVITY)) setGravity(c->get(GF_PHYS_GRAVITY));
-        if (c->isSet(GF_PHYS_SOLVER_ITERATIONS)) setSolverIterations(c->get(GF_PHYS_SOLVER_ITERATIONS));
-    }
-    scenes().push_back(this);
-}
+PhysicsScene::PhysicsScene() { scenes().push_back(this); }
 
 PhysicsScene::~PhysicsScene() {
     scenes().erase(std::remove(scenes().begin(), scenes().end(), this), scenes().end());
@@ -393,4 +384,5 @@ void PhysicsScene::integrateComposite(RigidBody* body, float dt) {
 
 } // namespace physics
 
-extern "C" iPhysicsScene* CreatePhysicsScene(iContext* c) { return new physics::PhysicsScene(c); }
+// The context is the seed's parameter; the scene's knobs are set through settingsOf(scene) (iPhysicsScene.h).
+extern "C" iPhysicsScene* CreatePhysicsScene(iContext*) { return new physics::PhysicsScene(); }

@@ -8,6 +8,9 @@
 #include "ContactResolution.h"
 #include "ContactSolver.h"
 #include "iPhysicsScene.h"
+#include "iPhysicsSceneHooks.h"
+#include "iPhysicsSceneSettings.h"
+#include "iPhysicsSceneStats.h"
 
 #include <cstdint>
 #include <unordered_map>
@@ -17,9 +20,12 @@ namespace physics {
 
 class RigidBody;
 
-class PhysicsScene final : public iPhysicsScene {
+class PhysicsScene final : public iPhysicsScene,
+                           public iPhysicsSceneSettings,
+                           public iPhysicsSceneHooks,
+                           public iPhysicsSceneStats {
 public:
-    explicit PhysicsScene(iContext* c);
+    PhysicsScene();
     PhysicsScene(const PhysicsScene&) = delete;
     PhysicsScene& operator=(const PhysicsScene&) = delete;
     static PhysicsScene* active();
@@ -35,6 +41,7 @@ public:
     void remove(const iRigidBody* o) override;
     void Delete() const override;
 
+    // --- iPhysicsSceneSettings, iPhysicsSceneHooks, iPhysicsSceneStats ---
     bool setGravity(const Vector& g) override;
     Vector getGravity() const override { return m_gravity; }
     bool setStepRate(int hz) override;

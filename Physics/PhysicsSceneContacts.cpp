@@ -1,6 +1,7 @@
 // PhysicsSceneContacts.cpp - the scene's contact resolution step and its solver and sleeping settings.
 #include "PhysicsScene.h"
 
+#include "MathEigen.h"
 #include "RigidBody.h"
 #include "iUtilities.h"
 

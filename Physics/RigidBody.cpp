@@ -2,6 +2,7 @@
 #include "RigidBody.h"
 
 #include "BodyValidation.h"
+#include "FrameDriver.h"
 #include "PhysicsScene.h"
 #include "iFrame.h"
 #include "iUtilities.h"
@@ -11,23 +12,13 @@
 
 namespace physics {
 
-namespace {
-// The rotation of a frame's world transform, scale removed and the homogeneous parts cleared.
-Matrix rotationOf(const Matrix& world) {
-    Matrix r = orthoNormalize(world);
-    r.m41 = r.m42 = r.m43 = 0.0f;
-    return r;
-}
-} // namespace
-
 RigidBody::RigidBody(iFrame* frame) {
     // A new body starts where its frame is (the game usually positions the frame first).
     m_frame = frame;
     if (frame) {
-        Matrix w = frame->world();
-        m_dyn.orientation = rotationOf(w);
-        m_dyn.position = w.position() + m_dyn.orientation.direction(m_dyn.com);
-        m_writtenT = frame->transform();
+        m_dyn.orientation = frameWorldRotation(frame);
+        m_dyn.position = frame->position() + m_dyn.orientation.direction(m_dyn.com);
+        m_writtenWorld = frame->world();
     }
     snapshotValid();
     recordPreviousPose();
@@ -59,7 +50,7 @@ void RigidBody::attach(iFrame* o) {
     // The frame follows this body from now on: it is moved to the body's pose at once.
     m_frame = o;
     if (o) {
-        m_writtenT = o->transform(); // not a game edit to adopt: the body's pose wins
+        m_writtenWorld = o->world(); // not a game edit to adopt: the body's pose wins
         recordPreviousPose();
         writeFrame(1.0f);
     }
@@ -112,11 +103,12 @@ void RigidBody::destroy() {
 }
 
 void RigidBody::adoptFrameEdits() {
-    if (!m_frame || m_dyn.attachedTo() || m_frame->transform() == m_writtenT) return;
+    if (!m_frame || m_dyn.attachedTo()) return;
     Matrix w = m_frame->world();
-    m_dyn.orientation = rotationOf(w);
+    if (w == m_writtenWorld) return;
+    m_dyn.orientation = frameWorldRotation(m_frame);
     m_dyn.position = w.position() + m_dyn.orientation.direction(m_dyn.com);
-    m_writtenT = m_frame->transform();
+    m_writtenWorld = w;
     recordPreviousPose(); // a teleport: nothing to interpolate across
 }
 
@@ -165,13 +157,9 @@ void RigidBody::writeFrame(float alpha) {
     Vector cur = m_dyn.getWorldPosition();
     Quat q = m_prevRotation.slerp(alpha, toQuat(m_dyn.getWorldOrientation()));
     Vector p = m_prevPosition + (cur - m_prevPosition) * alpha;
-    Matrix t = toOrientation(q.normalized());
-    Vector origin = p - t.direction(m_dyn.com);
-    t.m41 = origin.x;
-    t.m42 = origin.y;
-    t.m43 = origin.z;
-    m_frame->setWorldTransform(t);
-    m_writtenT = m_frame->transform();
+    Matrix r = toOrientation(q.normalized());
+    setFrameWorldPose(m_frame, r, p - r.direction(m_dyn.com));
+    m_writtenWorld = m_frame->world();
 }
 
 } // namespace physics

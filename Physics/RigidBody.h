@@ -96,7 +96,8 @@ private:
     RBDynamics m_dyn;
     RBDynamics m_lastValid;
     iFrame* m_frame = nullptr;
-    Matrix m_writtenT;
+    Matrix
+        m_writtenWorld; // the frame's world() as this body last wrote or adopted it: a change is a game edit
     std::vector<iCollisionListener*> m_listeners;
     std::vector<iForceGenerator*> m_generators;
     PhysicsScene* m_scene = nullptr;

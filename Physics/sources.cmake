@@ -2,6 +2,7 @@
 set(GUARDIAN_PHYSICS_SOURCES
   BodyValidation.cpp
   Composite.cpp
+  FrameDriver.cpp
   ContactManifolds.cpp
   ContactResolution.cpp
   ContactSolver.cpp
@@ -13,6 +14,7 @@ set(GUARDIAN_PHYSICS_SOURCES
 set(GUARDIAN_PHYSICS_HEADERS
   BodyValidation.h
   Composite.h
+  FrameDriver.h
   ContactManifold.h
   ContactResolution.h
   ContactSolver.h

@@ -6,6 +6,7 @@
 #include "iCollisionSpace.h"
 #include "iPhysicsFrame.h"
 #include "iPhysicsScene.h"
+#include "iPhysicsSceneStats.h"
 #include "iRigidBody.h"
 
 #include <cstdio>
@@ -53,7 +54,7 @@ void GameDesign::update(int now) {
     }
     // The deepest overlap the solver left this step (a swept contact's depth at first touch is not an
     // overlap).
-    float penetration = m_scene->getRemainingPenetration();
+    float penetration = statsOf(m_scene)->getRemainingPenetration();
     if (penetration > m_worstPenetration) m_worstPenetration = penetration;
     if (!m_world->allFinite())
         m_failure = "a body's state is not finite";
@@ -78,7 +79,7 @@ void GameDesign::summarise(int now) {
     // Everything but the last column is deterministic (a stepped clock drives the run).
     std::printf("t %6.2f s  bodies %4zu  awake %4zu  contacts %5zu  KE %10.4f J  max pen %.4f m  hits %6ld"
                 "  | %.3f ms/frame\n",
-                (now - m_start) / 1000.0, m_scene->getBodyCount(), m_scene->getAwakeBodyCount(),
-                m_world->space()->getNumContacts(), m_world->kineticEnergy(), m_worstPenetration,
-                m_hits->hits, perFrame);
+                (now - m_start) / 1000.0, statsOf(m_scene)->getBodyCount(),
+                statsOf(m_scene)->getAwakeBodyCount(), m_world->space()->getNumContacts(),
+                m_world->kineticEnergy(), m_worstPenetration, m_hits->hits, perFrame);
 }

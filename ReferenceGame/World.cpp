@@ -9,6 +9,7 @@
 #include "iCollisionSpace.h"
 #include "iPhysicsFrame.h"
 #include "iPhysicsScene.h"
+#include "iPhysicsSceneSettings.h"
 #include "iRigidBody.h"
 #include "iSimpleCollisionSpace.h"
 
@@ -70,7 +71,7 @@ float World::kineticEnergy() const {
 
 float World::mechanicalEnergy() const {
     float e = kineticEnergy();
-    Vector g = m_scene->getGravity();
+    Vector g = settingsOf(m_scene)->getGravity();
     for (const iPhysicsFrame* f : m_bodies) {
         const RBDynamics* d = f->getDynamics();
         if (d->physicsType != PHYS_Falling || !(d->mass < INFINITE_MASS)) continue;

@@ -4,7 +4,8 @@
 include(GNUInstallDirs)
 include(CMakePackageConfigHelpers)
 
-set(install_targets guardian_interfaces guardian_framework)
+set(install_targets guardian_host guardian_interfaces guardian_framework)
+set_target_properties(guardian_host PROPERTIES EXPORT_NAME host)
 set_target_properties(guardian_interfaces PROPERTIES EXPORT_NAME interfaces)
 set_target_properties(guardian_framework PROPERTIES EXPORT_NAME framework)
 foreach(module physics collision)
@@ -17,7 +18,8 @@ endforeach()
 install(TARGETS ${install_targets} EXPORT GuardianPhysicsTargets
   ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR} LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR})
 file(GLOB public_headers ${PROJECT_SOURCE_DIR}/Interfaces/*.h)
-file(GLOB framework_headers ${PROJECT_SOURCE_DIR}/Framework/i*.h)
+list(REMOVE_ITEM public_headers ${PROJECT_SOURCE_DIR}/Interfaces/MathEigen.h) # the engine's .cpp files only
+file(GLOB framework_headers ${PROJECT_SOURCE_DIR}/Framework/*.h)
 install(FILES ${public_headers} ${framework_headers} DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/guardian)
 install(EXPORT GuardianPhysicsTargets NAMESPACE Guardian::
   DESTINATION ${CMAKE_INSTALL_LIBDIR}/cmake/GuardianPhysics)

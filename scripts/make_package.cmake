@@ -15,6 +15,11 @@ foreach(f ${files})
   get_filename_component(sub "${f}" DIRECTORY)
   file(COPY "${ROOT}/${f}" DESTINATION "${dest}/${sub}")
 endforeach()
+# Standalone/: the three course-framework headers the engine includes, for a project with no framework (the
+# examples). A course project already has its own: INTEGRATION.md says not to copy this folder there.
+foreach(f iFrame.h Frame.h iUtilities.h)
+  file(COPY "${ROOT}/Framework/${f}" DESTINATION "${dest}/Standalone")
+endforeach()
 list(JOIN files "\n" manifest)
 file(WRITE "${dest}/MANIFEST.txt" "${manifest}\n")
 file(COPY "${ROOT}/packages/${NAME}/INTEGRATION.md" DESTINATION "${dest}")

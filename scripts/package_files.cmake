@@ -1,6 +1,8 @@
 # guardian_package_files(OUT ROOT MODULES...): the files a package needs, relative to ROOT: every source and
-# header of the modules, plus the Interfaces/ headers they include (followed transitively). Only quoted
-# includes are followed; <...> includes are the standard library and Eigen, which the user already has.
+# header of the modules, Interfaces/*.cpp (compiled once per package), plus the Interfaces/ headers they
+# include (followed transitively). Only quoted includes are followed; <...> includes are the standard library
+# and Eigen, which the user already has. Includes found nowhere in ROOT's modules or Interfaces/ are the host
+# framework's (iFrame.h, Frame.h, iUtilities.h): the package never carries them.
 function(guardian_package_files out root)
   set(modules ${ARGN})
   set(queue "")
@@ -8,6 +10,10 @@ function(guardian_package_files out root)
     file(GLOB_RECURSE found RELATIVE "${root}" "${root}/${m}/*.h" "${root}/${m}/*.cpp")
     list(APPEND queue ${found})
   endforeach()
+  if(NOT "Framework" IN_LIST modules)
+    file(GLOB interface_sources RELATIVE "${root}" "${root}/Interfaces/*.cpp")
+    list(APPEND queue ${interface_sources})
+  endif()
   set(result "")
   while(queue)
     list(POP_FRONT queue rel)

@@ -2,6 +2,7 @@
 // sphere-sphere figure is the baseline the others are compared with) and populateContactList for 1,000 and
 // 5,000 bodies in the simple space, sparse (few contacts) and dense (several contacts per body), at rest and
 // moving (continuous sampling at work).
+#include "MathEigen.h"
 #include "Narrowphase.h"
 #include "UserBody.h"
 #include "iCOBB.h"

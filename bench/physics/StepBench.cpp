@@ -5,6 +5,7 @@
 // includes everything a step does: validation before and after, composite setup, integration, and no
 // frames (the bodies have none, to measure the simulator rather than the frames).
 #include "iPhysicsScene.h"
+#include "iPhysicsSceneSettings.h"
 #include "iRigidBody.h"
 
 #include <benchmark/benchmark.h>
@@ -22,8 +23,8 @@ constexpr int BODIES = 10000;
 void stepBodies(benchmark::State& state) {
     Integrator integrator = Integrator(state.range(0));
     iPhysicsScene* scene = CreatePhysicsScene(nullptr);
-    scene->setStepRate(100);
-    scene->setIntegrator(integrator);
+    settingsOf(scene)->setStepRate(100);
+    settingsOf(scene)->setIntegrator(integrator);
     std::mt19937 rng(12345);
     std::uniform_real_distribution<float> u(-1.0f, 1.0f);
     for (int i = 0; i < BODIES; ++i) {

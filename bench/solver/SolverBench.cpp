@@ -7,6 +7,7 @@
 #include "World.h"
 #include "iPhysicsFrame.h"
 #include "iPhysicsScene.h"
+#include "iPhysicsSceneSettings.h"
 
 #include <benchmark/benchmark.h>
 
@@ -22,7 +23,7 @@ template <class Build> void pile(benchmark::State& state, Build build) {
     for (auto _ : state) {
         state.PauseTiming();
         iPhysicsScene* scene = CreatePhysicsScene(nullptr);
-        scene->setSolverIterations(int(state.range(0)));
+        settingsOf(scene)->setSolverIterations(int(state.range(0)));
         scene->update(0);
         World* world = new World(scene);
         build(*world);
@@ -50,8 +51,8 @@ void BM_Pyramid210(benchmark::State& state) {
     for (auto _ : state) {
         state.PauseTiming();
         iPhysicsScene* scene = CreatePhysicsScene(nullptr);
-        scene->setSolverIterations(int(state.range(0)));
-        scene->setSleepingEnabled(state.range(1) != 0);
+        settingsOf(scene)->setSolverIterations(int(state.range(0)));
+        settingsOf(scene)->setSleepingEnabled(state.range(1) != 0);
         scene->update(0);
         World* world = new World(scene);
         buildPyramid(*world, 20);

@@ -1,3 +1,4 @@
+#include "MathEigen.h"
 // GjkReference.h - the independent truth for the narrowphase tests: GJK distance between convex shapes
 // given only by their support functions, in double precision, with a brute-force sub-simplex search (every
 // face, edge and vertex of the current simplex) instead of Johnson's case analysis, so it shares no code or

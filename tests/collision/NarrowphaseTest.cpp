@@ -5,6 +5,7 @@
 // contact point must lie within half the depth (plus a tolerance) of both shapes.
 #include "Narrowphase.h"
 #include "GjkReference.h"
+#include "MathEigen.h"
 
 #include <gtest/gtest.h>
 

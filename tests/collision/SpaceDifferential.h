@@ -4,12 +4,14 @@
 // overlapping pair, none twice, none false. Reusable: pass any space factory.
 #pragma once
 
+#include "MathEigen.h"
 #include "Narrowphase.h"
 #include "UserBody.h"
 #include "iCOBB.h"
 #include "iCPlane.h"
 #include "iCSphere.h"
 #include "iCollisionSpace.h"
+#include "iContactFeatures.h"
 
 #include <gtest/gtest.h>
 
@@ -134,7 +136,7 @@ inline void checkAgainstBruteForce(const std::function<iCollisionSpace*()>& make
     for (size_t k = 0; k < space->getNumContacts(); ++k) {
         auto key = std::minmax(c[k].g1, c[k].g2);
         ASSERT_NE(c[k].g1, c[k].g2);
-        const unsigned* ids = space->getContactFeatureIds();
+        const unsigned* ids = featuresOf(space)->getContactFeatureIds();
         if (moveBy > 0.0f && !expected.count(key)) {
             ASSERT_TRUE(ids && (ids[k] & 0x80000000u)) << "false contact (not from sampling)";
         } else {

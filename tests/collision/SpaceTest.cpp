@@ -6,7 +6,9 @@
 #include "iCOBB.h"
 #include "iCPlane.h"
 #include "iCSphere.h"
+#include "iCollisionQueries.h"
 #include "iCollisionSpace.h"
+#include "iContactFeatures.h"
 #include "iSimpleCollisionSpace.h"
 #include "iUtilities.h"
 
@@ -279,28 +281,28 @@ TEST_F(SpaceTest, QueriesGoThroughTheSpace) {
     iCollisionGeometry* gc = CreateCOBB(&c, Vector(0.5f, 0.5f, 0.5f));
     iCollisionGeometry* floor = CreateCPlane(nullptr, Vector(0, 1, 0), -4.0f);
     RayHit hit;
-    ASSERT_TRUE(space->rayCast(Vector(0, 0, 0), Vector(0, 0, 2), 100, hit));
+    ASSERT_TRUE(queriesOf(space)->rayCast(Vector(0, 0, 0), Vector(0, 0, 2), 100, hit));
     EXPECT_EQ(hit.geometry, ga);
     EXPECT_NEAR(hit.distance, 4.0f, 1e-5f);
     EXPECT_NEAR(hit.normal.z, -1.0f, 1e-5f);
     EXPECT_NEAR(hit.point.z, 4.0f, 1e-5f);
-    ASSERT_TRUE(space->rayCast(Vector(0, 0.0f, 20), Vector(0, 0, -1), 100, hit));
+    ASSERT_TRUE(queriesOf(space)->rayCast(Vector(0, 0.0f, 20), Vector(0, 0, -1), 100, hit));
     EXPECT_EQ(hit.geometry, gb);
     EXPECT_NEAR(hit.distance, 8.0f, 1e-5f);
-    ASSERT_TRUE(space->rayCast(Vector(3, 10, 5), Vector(0, -1, 0), 100, hit));
+    ASSERT_TRUE(queriesOf(space)->rayCast(Vector(3, 10, 5), Vector(0, -1, 0), 100, hit));
     EXPECT_EQ(hit.geometry, gc);
     EXPECT_NEAR(hit.distance, 9.5f, 1e-5f);
-    ASSERT_TRUE(space->rayCast(Vector(9, 10, 5), Vector(0, -1, 0), 100, hit));
+    ASSERT_TRUE(queriesOf(space)->rayCast(Vector(9, 10, 5), Vector(0, -1, 0), 100, hit));
     EXPECT_EQ(hit.geometry, floor);
     EXPECT_NEAR(hit.distance, 14.0f, 1e-4f);
-    EXPECT_FALSE(space->rayCast(Vector(9, 10, 5), Vector(0, -1, 0), 13.0f, hit));
-    EXPECT_FALSE(space->rayCast(Vector(9, 10, 5), Vector(0, 0, 0), 13.0f, hit)); // refused
+    EXPECT_FALSE(queriesOf(space)->rayCast(Vector(9, 10, 5), Vector(0, -1, 0), 13.0f, hit));
+    EXPECT_FALSE(queriesOf(space)->rayCast(Vector(9, 10, 5), Vector(0, 0, 0), 13.0f, hit)); // refused
     std::vector<iCollisionGeometry*> out;
-    EXPECT_EQ(space->overlapSphere(Vector(0, 0, 7), 1.2f, out), 2u);
+    EXPECT_EQ(queriesOf(space)->overlapSphere(Vector(0, 0, 7), 1.2f, out), 2u);
     EXPECT_TRUE(contains(out, ga) && contains(out, gb));
-    EXPECT_EQ(space->overlapAABB(Vector(2.6f, -1, 4), Vector(4, 1, 6), out), 1u);
+    EXPECT_EQ(queriesOf(space)->overlapAABB(Vector(2.6f, -1, 4), Vector(4, 1, 6), out), 1u);
     EXPECT_TRUE(contains(out, gc));
-    EXPECT_EQ(space->overlapBox(Vector(0, -4.5f, 0), rotatez(0.3f), Vector(1, 0.2f, 1), out), 1u);
+    EXPECT_EQ(queriesOf(space)->overlapBox(Vector(0, -4.5f, 0), rotatez(0.3f), Vector(1, 0.2f, 1), out), 1u);
     EXPECT_TRUE(contains(out, floor));
     for (iCollisionGeometry* g : {ga, gb, gc, floor}) g->Delete();
 }
@@ -311,13 +313,14 @@ TEST_F(SpaceTest, FeatureIdsParallelTheContactsAndPersist) {
     iCollisionGeometry* c = CreateCOBB(&crate, Vector(0.5f, 0.5f, 0.5f));
     space->populateContactList(1.0f / 60);
     ASSERT_EQ(space->getNumContacts(), 4u);
-    std::vector<unsigned> first(space->getContactFeatureIds(), space->getContactFeatureIds() + 4);
+    std::vector<unsigned> first(featuresOf(space)->getContactFeatureIds(),
+                                featuresOf(space)->getContactFeatureIds() + 4);
     const CollisionContact* storage = space->getContactList();
     crate.place(Vector(0.21f, 0.449f, 0.01f));
     space->populateContactList(1.0f / 60);
     ASSERT_EQ(space->getNumContacts(), 4u);
     EXPECT_EQ(space->getContactList(), storage); // storage reused
-    for (int i = 0; i < 4; ++i) EXPECT_EQ(space->getContactFeatureIds()[i], first[size_t(i)]);
+    for (int i = 0; i < 4; ++i) EXPECT_EQ(featuresOf(space)->getContactFeatureIds()[i], first[size_t(i)]);
     g->Delete();
     c->Delete();
 }

@@ -116,13 +116,13 @@ TEST(Clock, SteppedClockIsDeterministicAndRealClockMovesForward) {
 
 TEST(Context, UnsetKeysReadAsZeroAndSetKeysReadBack) {
     iContext* c = CreateContext();
-    EXPECT_FALSE(c->isSet(GF_PHYS_STEP_RATE));
-    EXPECT_EQ(c->get(GF_PHYS_STEP_RATE), 0);
-    c->set(GF_PHYS_STEP_RATE, 120);
-    c->set(GF_PHYS_GRAVITY, Vector(0, -1.62f, 0));
-    EXPECT_TRUE(c->isSet(GF_PHYS_STEP_RATE));
-    EXPECT_EQ(c->get(GF_PHYS_STEP_RATE), 120);
-    EXPECT_EQ(c->get(GF_PHYS_GRAVITY).y, -1.62f);
+    EXPECT_FALSE(c->isSet(GF_FRAMES));
+    EXPECT_EQ(c->get(GF_FRAMES), 0);
+    c->set(GF_FRAMES, 120);
+    c->set(GF_GRAVITY, Vector(0, -1.62f, 0));
+    EXPECT_TRUE(c->isSet(GF_FRAMES));
+    EXPECT_EQ(c->get(GF_FRAMES), 120);
+    EXPECT_EQ(c->get(GF_GRAVITY).y, -1.62f);
     c->set(static_cast<Integer>(-1), 5); // out of range: ignored, no crash
     EXPECT_EQ(c->get(static_cast<Integer>(GF_NO_INTEGERS)), 0);
     c->Delete();

@@ -2,6 +2,7 @@
 // centre of mass with the combined (parallel-axis) inertia, impulses on any part, rigid riding, detaching.
 #include "Frame.h"
 #include "PhysicsTestSupport.h"
+#include "iPhysicsSceneSettings.h"
 
 #include <gtest/gtest.h>
 
@@ -55,7 +56,7 @@ TEST(Attachment, CompositeMassAndLinks) {
 // composite, so w stays constant and the exact-exponential rotation update is exact to round-off.
 TEST(Attachment, CompositeRotatesAboutTheCombinedCentreOfMass) {
     SceneHolder h(60);
-    h.scene->setGravity(Vector());
+    settingsOf(h.scene)->setGravity(Vector());
     Dumbbell d;
     RBDynamics& a = d.a->getDynamics();
     RBDynamics& b = d.b->getDynamics();
@@ -85,7 +86,7 @@ TEST(Attachment, CompositeRotatesAboutTheCombinedCentreOfMass) {
 // mass stays where it is.
 TEST(Attachment, TorqueUsesTheCombinedInertia) {
     SceneHolder h(60);
-    h.scene->setGravity(Vector());
+    settingsOf(h.scene)->setGravity(Vector());
     Dumbbell d;
     RBDynamics& a = d.a->getDynamics();
     a.temporalTorque = Vector(0, 0, 6.0f);

@@ -5,6 +5,8 @@
 #include "iCollisionListener.h"
 #include "iFixedUpdater.h"
 #include "iPhysicsFrame.h"
+#include "iPhysicsSceneHooks.h"
+#include "iPhysicsSceneStats.h"
 
 #include <gtest/gtest.h>
 
@@ -36,13 +38,13 @@ TEST(BodyLifecycle, BodiesJoinTheLastCreatedSceneOrNone) {
     iPhysicsScene* first = CreatePhysicsScene(nullptr);
     iPhysicsScene* second = CreatePhysicsScene(nullptr);
     iRigidBody* inSecond = CreateRigidBody(nullptr);
-    EXPECT_EQ(first->getBodyCount(), 0u);
-    EXPECT_EQ(second->getBodyCount(), 1u);
+    EXPECT_EQ(statsOf(first)->getBodyCount(), 0u);
+    EXPECT_EQ(statsOf(second)->getBodyCount(), 1u);
     second->Delete(); // deletes inSecond; the first scene is active again
     iRigidBody* inFirst = CreateRigidBody(nullptr);
-    EXPECT_EQ(first->getBodyCount(), 1u);
+    EXPECT_EQ(statsOf(first)->getBodyCount(), 1u);
     EXPECT_TRUE(first->add(loose));
-    EXPECT_EQ(first->getBodyCount(), 2u);
+    EXPECT_EQ(statsOf(first)->getBodyCount(), 2u);
     first->Delete();
     (void)inSecond;
     (void)inFirst;
@@ -62,7 +64,7 @@ struct Killer final : iFixedUpdater {
         victimFrame->Delete(); // right after: the body must no longer touch it
         victimPF->Delete();
         scene->remove(removed);
-        scene->removeFixedUpdater(this);
+        hooksOf(scene)->removeFixedUpdater(this);
         victim->Delete(); // a second Delete of a queued body is ignored
         deadDuringCall = log->dead.size();
     }
@@ -78,21 +80,21 @@ TEST(BodyLifecycle, DeletingAndRemovingInsideAFixedUpdaterIsDeferredAndSafe) {
     iRigidBody* pfBody = pf->getRB();
     iRigidBody* removed = CreateRigidBody(nullptr);
     iRigidBody* survivor = CreateRigidBody(nullptr);
-    EXPECT_EQ(h.scene->getBodyCount(), 4u);
+    EXPECT_EQ(statsOf(h.scene)->getBodyCount(), 4u);
     Killer k;
     k.victim = victim;
     k.victimFrame = frame;
     k.victimPF = pf;
     k.removed = removed;
     k.log = &log;
-    ASSERT_TRUE(h.scene->addFixedUpdater(&k));
+    ASSERT_TRUE(hooksOf(h.scene)->addFixedUpdater(&k));
     h.run(100);                      // six steps; the updater runs once and removes itself
     EXPECT_EQ(k.deadDuringCall, 0u); // nothing was destroyed while the step was running
     EXPECT_TRUE(log.has(victim));
     EXPECT_TRUE(log.has(pfBody));
     EXPECT_FALSE(log.has(removed));
     EXPECT_EQ(log.dead.size(), 2u);
-    EXPECT_EQ(h.scene->getBodyCount(), 1u);
+    EXPECT_EQ(statsOf(h.scene)->getBodyCount(), 1u);
     EXPECT_LT(survivor->getDynamics().position.y, 0.0f); // the step went on for the others
     Vector still = removed->getDynamics().position;
     h.run(100);
@@ -140,12 +142,12 @@ TEST(BodyLifecycle, PhysicsFrameSimulatesAndClones) {
     EXPECT_NE(copy->getRB(), pf->getRB());
     EXPECT_EQ(copy->getDynamics()->position, pf->getDynamics()->position);
     EXPECT_EQ(copy->getDynamics()->velocity, pf->getDynamics()->velocity);
-    EXPECT_EQ(h.scene->getBodyCount(), 2u);
+    EXPECT_EQ(statsOf(h.scene)->getBodyCount(), 2u);
     h.run(100);
     EXPECT_EQ(copy->getDynamics()->position, pf->getDynamics()->position); // same motion from the same state
     copy->Delete();
     pf->Delete();
-    EXPECT_EQ(h.scene->getBodyCount(), 0u);
+    EXPECT_EQ(statsOf(h.scene)->getBodyCount(), 0u);
 }
 
 TEST(BodyLifecycle, RigidBodyCloneCopiesDynamicsAndListenersButNotTheFrame) {
@@ -162,7 +164,7 @@ TEST(BodyLifecycle, RigidBodyCloneCopiesDynamicsAndListenersButNotTheFrame) {
     EXPECT_EQ(c->getListeners().size(), 1u);
     EXPECT_EQ(c->getDynamics().velocity, Vector(1, 2, 3));
     EXPECT_EQ(c->getDynamics().mass, 5.0f);
-    EXPECT_EQ(h.scene->getBodyCount(), 2u);
+    EXPECT_EQ(statsOf(h.scene)->getBodyCount(), 2u);
     c->detachListener(&l);
     EXPECT_TRUE(c->getListeners().empty());
     c->attach(f); // binds and moves the frame to the body at once
@@ -184,6 +186,6 @@ TEST(BodyLifecycle, InvalidAddAndRemoveAreRefused) {
     h.scene->remove(loose);
     h.scene->remove(loose); // not in the scene any more
     EXPECT_EQ(errors.count(), 4u);
-    EXPECT_EQ(h.scene->getBodyCount(), 1u);
+    EXPECT_EQ(statsOf(h.scene)->getBodyCount(), 1u);
     loose->Delete();
 }

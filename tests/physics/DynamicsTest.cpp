@@ -1,6 +1,7 @@
 // DynamicsTest.cpp - what each RBDynamics property does in a scene: physics types, infinite mass, the
 // one-step temporal force, and invalid values refused with the body left as it was.
 #include "PhysicsTestSupport.h"
+#include "iPhysicsSceneSettings.h"
 
 #include <gtest/gtest.h>
 
@@ -51,7 +52,7 @@ TEST(Dynamics, FloatingBodiesFeelNoGravityAndFallingOnesDo) {
     floating->getDynamics().physicsType = PHYS_Floating;
     floating->getDynamics().velocity = Vector(0, 1, 0);
     iRigidBody* falling = CreateRigidBody(nullptr);
-    h.scene->setGravity(Vector(0, -2, 0));
+    settingsOf(h.scene)->setGravity(Vector(0, -2, 0));
     h.run(1000);
     EXPECT_NEAR(floating->getDynamics().position.y, 1.0f, 1e-5f);
     EXPECT_NEAR(floating->getDynamics().velocity.y, 1.0f, 1e-6f);
@@ -63,7 +64,7 @@ TEST(Dynamics, FloatingBodiesFeelNoGravityAndFallingOnesDo) {
 // a = acceleration + (force + temporalForce) / mass; temporalForce and temporalTorque act for one step.
 TEST(Dynamics, TemporalForceAndTorqueActForOneStep) {
     SceneHolder h(60);
-    h.scene->setGravity(Vector());
+    settingsOf(h.scene)->setGravity(Vector());
     iRigidBody* b = CreateRigidBody(nullptr);
     RBDynamics& d = b->getDynamics();
     d.mass = 2.0f;
@@ -90,7 +91,7 @@ TEST(Dynamics, TemporalForceAndTorqueActForOneStep) {
 // Writing angularMomentum alone sets w = I_world^-1 L; writing angularVelocity sets L = I_world w.
 TEST(Dynamics, AngularVelocityAndMomentumFollowWhicheverWasWritten) {
     SceneHolder h(60);
-    h.scene->setGravity(Vector());
+    settingsOf(h.scene)->setGravity(Vector());
     iRigidBody* b = CreateRigidBody(nullptr);
     RBDynamics& d = b->getDynamics();
     d.setInertiaTensor(Matrix(Vector(1, 2, 4)));

@@ -2,6 +2,9 @@
 // mass-spring. Tolerances are derived in the comments (float has eps = 1.19e-7).
 #include "PhysicsTestSupport.h"
 #include "iForceGenerator.h"
+#include "iPhysicsSceneHooks.h"
+#include "iPhysicsSceneSettings.h"
+#include "iPhysicsSceneStats.h"
 
 #include <gtest/gtest.h>
 
@@ -22,7 +25,7 @@ Vector projectileError(int hz, Integrator integrator) {
     b->getDynamics().position = X0;
     b->getDynamics().velocity = V0;
     h.run(1000);
-    EXPECT_EQ(h.scene->getStepCount(), hz); // 1000 ms is exactly hz steps (integer clock)
+    EXPECT_EQ(statsOf(h.scene)->getStepCount(), hz); // 1000 ms is exactly hz steps (integer clock)
     Vector exact = X0 + V0 + G * 0.5f;
     return b->getDynamics().position - exact;
 }
@@ -93,14 +96,14 @@ struct SpringRun {
 // m = 2, k = 2: omega = sqrt(k/m) = 1 rad/s, period 2 pi. From x = 1 at rest, x(t) = cos t.
 SpringRun runSpring(Integrator integrator, double periods) {
     SceneHolder h(60, integrator);
-    h.scene->setGravity(Vector());
-    h.scene->setMaxStepsPerUpdate(1000);
+    settingsOf(h.scene)->setGravity(Vector());
+    settingsOf(h.scene)->setMaxStepsPerUpdate(1000);
     iRigidBody* b = CreateRigidBody(nullptr);
     RBDynamics& d = b->getDynamics();
     d.mass = 2.0f;
     d.position = Vector(1, 0, 0);
     Spring spring(2.0f);
-    h.scene->addForceGenerator(b, &spring);
+    hooksOf(h.scene)->addForceGenerator(b, &spring);
     auto energy = [&] {
         return 0.5f * d.mass * d.velocity.lengthSquared() + 0.5f * spring.k * d.position.lengthSquared();
     };
@@ -113,11 +116,11 @@ SpringRun runSpring(Integrator integrator, double periods) {
         h.scene->update(h.now);
         r.maxEnergyError = std::fmax(r.maxEnergyError, std::fabs(energy() - e0) / e0);
     }
-    EXPECT_EQ(h.scene->getStepCount(), steps);
+    EXPECT_EQ(statsOf(h.scene)->getStepCount(), steps);
     r.finalEnergyRatio = energy() / e0;
     // x at the time actually simulated (steps / 60 s), analytic cos(omega t).
     r.finalX = d.position.x - float(std::cos(double(steps) / 60.0));
-    h.scene->removeForceGenerator(b, &spring);
+    hooksOf(h.scene)->removeForceGenerator(b, &spring);
     return r;
 }
 

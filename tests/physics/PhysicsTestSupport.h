@@ -4,6 +4,7 @@
 
 #include "RBDynamics.h"
 #include "iPhysicsScene.h"
+#include "iPhysicsSceneSettings.h"
 #include "iRigidBody.h"
 #include "iUtilities.h"
 
@@ -35,8 +36,8 @@ struct SceneHolder {
     int now = 0;
     explicit SceneHolder(int hz = 60, Integrator integrator = INTEGRATOR_Default)
         : scene(CreatePhysicsScene(nullptr)) {
-        scene->setStepRate(hz);
-        scene->setIntegrator(integrator);
+        settingsOf(scene)->setStepRate(hz);
+        settingsOf(scene)->setIntegrator(integrator);
         scene->update(now); // sets the time base
     }
     ~SceneHolder() { scene->Delete(); }

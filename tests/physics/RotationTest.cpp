@@ -1,6 +1,8 @@
 // RotationTest.cpp - free rotation of an asymmetric body (conservation, the intermediate-axis flip) and
 // impulses at an offset point, against closed-form rigid-body mechanics.
+#include "MathEigen.h"
 #include "PhysicsTestSupport.h"
+#include "iPhysicsSceneSettings.h"
 
 #include <gtest/gtest.h>
 
@@ -24,7 +26,7 @@ struct FreeSpin {
 // Torque-free motion from angular velocity w0 (world = body axes at t = 0) for `ms`, at 120 Hz.
 FreeSpin spin(const Vector& w0, char axis, Integrator integrator, int ms) {
     SceneHolder h(120, integrator);
-    h.scene->setGravity(Vector());
+    settingsOf(h.scene)->setGravity(Vector());
     iRigidBody* b = CreateRigidBody(nullptr);
     RBDynamics& d = b->getDynamics();
     d.setInertiaTensor(INERTIA);

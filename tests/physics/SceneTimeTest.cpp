@@ -4,6 +4,8 @@
 #include "PhysicsTestSupport.h"
 #include "iCollisionSpace.h"
 #include "iContext.h"
+#include "iPhysicsSceneSettings.h"
+#include "iPhysicsSceneStats.h"
 
 #include <gtest/gtest.h>
 
@@ -31,7 +33,7 @@ TEST(SceneTime, FramesAreInterpolatedOneStepBehind) {
     iFrame* f = CreateFrame();
     iRigidBody* b = mover(f);
     h.run(1008, 16);
-    EXPECT_EQ(h.scene->getStepCount(), 60);
+    EXPECT_EQ(statsOf(h.scene)->getStepCount(), 60);
     EXPECT_NEAR(b->getDynamics().position.x, 1.0f, 1e-5f);
     float drawn = 1.008f - 1.0f / 60.0f;
     EXPECT_NEAR(f->position().x, drawn, 1e-5f);
@@ -67,16 +69,16 @@ TEST(SceneTime, RepeatedAndBackwardsTimeIntegrateNothing) {
     SceneHolder h(60);
     iRigidBody* b = mover(nullptr);
     h.run(500);
-    EXPECT_EQ(h.scene->getStepCount(), 30);
+    EXPECT_EQ(statsOf(h.scene)->getStepCount(), 30);
     Vector at = b->getDynamics().position;
     h.scene->update(500);
     h.scene->update(400); // backwards: re-based at 400
-    EXPECT_EQ(h.scene->getStepCount(), 30);
+    EXPECT_EQ(statsOf(h.scene)->getStepCount(), 30);
     EXPECT_EQ(b->getDynamics().position, at);
     h.scene->update(416); // 16 ms: under a step (16.7 ms)
-    EXPECT_EQ(h.scene->getStepCount(), 30);
+    EXPECT_EQ(statsOf(h.scene)->getStepCount(), 30);
     h.scene->update(417); // 17 ms since the re-base: one step
-    EXPECT_EQ(h.scene->getStepCount(), 31);
+    EXPECT_EQ(statsOf(h.scene)->getStepCount(), 31);
 }
 
 // A 10 s stall takes at most maxStepsPerUpdate steps (8) and drops the rest: the game slows down instead of
@@ -85,11 +87,11 @@ TEST(SceneTime, ALongStallIsBoundedAndTheBacklogDropped) {
     SceneHolder h(60);
     iRigidBody* b = mover(nullptr);
     h.scene->update(10000);
-    EXPECT_EQ(h.scene->getStepCount(), 8);
-    EXPECT_EQ(h.scene->getDroppedStepCount(), 600 - 8);
+    EXPECT_EQ(statsOf(h.scene)->getStepCount(), 8);
+    EXPECT_EQ(statsOf(h.scene)->getDroppedStepCount(), 600 - 8);
     EXPECT_NEAR(b->getDynamics().position.x, 8.0f / 60.0f, 1e-6f);
     h.scene->update(10017);
-    EXPECT_EQ(h.scene->getStepCount(), 9);
+    EXPECT_EQ(statsOf(h.scene)->getStepCount(), 9);
 }
 
 // suspend(), a long pause, restore(now): the pause is not simulated.
@@ -99,37 +101,37 @@ TEST(SceneTime, SuspendAndRestoreResumeWithoutAJump) {
     h.run(100); // 6 steps
     h.scene->suspend();
     h.scene->update(3000); // ignored while suspended
-    EXPECT_EQ(h.scene->getStepCount(), 6);
+    EXPECT_EQ(statsOf(h.scene)->getStepCount(), 6);
     h.scene->restore(5000);
     h.scene->update(5017);
-    EXPECT_EQ(h.scene->getStepCount(), 7);
+    EXPECT_EQ(statsOf(h.scene)->getStepCount(), 7);
     EXPECT_NEAR(b->getDynamics().position.x, 7.0f / 60.0f, 1e-6f);
 }
 
-// GF_PHYS_* keys configure a new scene; invalid settings are refused and leave the old value.
-TEST(SceneTime, SettingsComeFromTheContextAndInvalidOnesAreRefused) {
+// The scene's knobs are set through settingsOf(scene); invalid settings are refused and leave the old value.
+TEST(SceneTime, SettingsAreSetThroughTheSettingsInterfaceAndInvalidOnesAreRefused) {
     iContext* c = CreateContext();
-    c->set(GF_PHYS_STEP_RATE, 240);
-    c->set(GF_PHYS_MAX_STEPS, 3);
-    c->set(GF_PHYS_INTEGRATOR, int(INTEGRATOR_RK4));
-    c->set(GF_PHYS_GRAVITY, Vector(0, -1.62f, 0));
     iPhysicsScene* s = CreatePhysicsScene(c);
-    EXPECT_EQ(s->getStepRate(), 240);
-    EXPECT_EQ(s->getMaxStepsPerUpdate(), 3);
-    EXPECT_EQ(s->getIntegrator(), INTEGRATOR_RK4);
-    EXPECT_EQ(s->getGravity(), Vector(0, -1.62f, 0));
+    ASSERT_TRUE(settingsOf(s)->setStepRate(240));
+    ASSERT_TRUE(settingsOf(s)->setMaxStepsPerUpdate(3));
+    ASSERT_TRUE(settingsOf(s)->setIntegrator(INTEGRATOR_RK4));
+    ASSERT_TRUE(settingsOf(s)->setGravity(Vector(0, -1.62f, 0)));
+    EXPECT_EQ(settingsOf(s)->getStepRate(), 240);
+    EXPECT_EQ(settingsOf(s)->getMaxStepsPerUpdate(), 3);
+    EXPECT_EQ(settingsOf(s)->getIntegrator(), INTEGRATOR_RK4);
+    EXPECT_EQ(settingsOf(s)->getGravity(), Vector(0, -1.62f, 0));
     {
         ErrorRecorder errors;
-        EXPECT_FALSE(s->setStepRate(0));
-        EXPECT_FALSE(s->setMaxStepsPerUpdate(0));
-        EXPECT_FALSE(s->setIntegrator(Integrator(42)));
-        EXPECT_FALSE(s->setGravity(Vector(0, NAN, 0)));
+        EXPECT_FALSE(settingsOf(s)->setStepRate(0));
+        EXPECT_FALSE(settingsOf(s)->setMaxStepsPerUpdate(0));
+        EXPECT_FALSE(settingsOf(s)->setIntegrator(Integrator(42)));
+        EXPECT_FALSE(settingsOf(s)->setGravity(Vector(0, NAN, 0)));
         EXPECT_EQ(errors.count(), 4u);
     }
-    EXPECT_EQ(s->getStepRate(), 240);
-    EXPECT_EQ(s->getIntegrator(), INTEGRATOR_RK4);
-    EXPECT_TRUE(s->setIntegrator(INTEGRATOR_Default));
-    EXPECT_EQ(s->getIntegrator(), INTEGRATOR_SemiImplicitEuler);
+    EXPECT_EQ(settingsOf(s)->getStepRate(), 240);
+    EXPECT_EQ(settingsOf(s)->getIntegrator(), INTEGRATOR_RK4);
+    EXPECT_TRUE(settingsOf(s)->setIntegrator(INTEGRATOR_Default));
+    EXPECT_EQ(settingsOf(s)->getIntegrator(), INTEGRATOR_SemiImplicitEuler);
     s->Delete();
     c->Delete();
 }

@@ -4,6 +4,8 @@
 
 #include "Scenes.h"
 #include "iCollisionSpace.h"
+#include "iPhysicsSceneSettings.h"
+#include "iPhysicsSceneStats.h"
 #include "iUtilities.h"
 
 #include <gtest/gtest.h>
@@ -141,13 +143,13 @@ TEST(Resolution, TowerOfTenStandsTenSecondsWithTopDriftUnder1cm) {
         // at a quarter of the sub-step rate.
         const float f_hz = std::min(100.0f, 0.25f * 60.0f * float(iterations));
         const float w = 2.0f * 3.14159265f * f_hz, give = (9.0f * kG / 4.0f) * 8.0f / (w * w);
-        EXPECT_LT(f.scene->getRemainingPenetration(), 1.2f * give) << iterations << " iterations";
+        EXPECT_LT(statsOf(f.scene)->getRemainingPenetration(), 1.2f * give) << iterations << " iterations";
         if (iterations == 10) { // the bound: the slop (none) plus 1 mm
-            EXPECT_LT(f.scene->getRemainingPenetration(), 0.001f);
+            EXPECT_LT(statsOf(f.scene)->getRemainingPenetration(), 0.001f);
         }
         RecordProperty("tower_drift_m_" + std::to_string(iterations), std::to_string(drift));
         RecordProperty("tower_overlap_m_" + std::to_string(iterations),
-                       std::to_string(f.scene->getRemainingPenetration()));
+                       std::to_string(statsOf(f.scene)->getRemainingPenetration()));
     }
 }
 
@@ -175,7 +177,8 @@ TEST(Resolution, ThirtyDominoesAllFallAndComeToRest) {
         if (o.m22 > 0.7071f) ++standing; // the domino's up axis is still within 45 degrees of vertical
     }
     EXPECT_EQ(standing, 0);
-    EXPECT_EQ(f.scene->getAwakeBodyCount(), 0u); // (one that chattered on a flickering contact never slept)
+    EXPECT_EQ(statsOf(f.scene)->getAwakeBodyCount(),
+              0u); // (one that chattered on a flickering contact never slept)
 }
 
 TEST(Resolution, HeavyOnLightStackOfMassRatio100Stands) {
@@ -251,17 +254,17 @@ TEST(Resolution, AMovingKinematicBodyPushesADynamicOne) {
 
 TEST(Resolution, SolverKnobsRefuseBadValuesAndKeepTheirSetting) {
     SceneFixture f;
-    ASSERT_EQ(f.scene->getSolverIterations(), 10);
+    ASSERT_EQ(settingsOf(f.scene)->getSolverIterations(), 10);
     unsigned long errors = errorCount();
-    EXPECT_FALSE(f.scene->setSolverIterations(0));
-    EXPECT_FALSE(f.scene->setSolverIterations(-3));
-    EXPECT_FALSE(f.scene->setSolverIterations(1001));
-    EXPECT_FALSE(f.scene->setFrictionRule(CombineRule(99)));
-    EXPECT_FALSE(f.scene->setRestitutionRule(CombineRule(-1)));
+    EXPECT_FALSE(settingsOf(f.scene)->setSolverIterations(0));
+    EXPECT_FALSE(settingsOf(f.scene)->setSolverIterations(-3));
+    EXPECT_FALSE(settingsOf(f.scene)->setSolverIterations(1001));
+    EXPECT_FALSE(settingsOf(f.scene)->setFrictionRule(CombineRule(99)));
+    EXPECT_FALSE(settingsOf(f.scene)->setRestitutionRule(CombineRule(-1)));
     EXPECT_EQ(errorCount(), errors + 5); // each refusal is reported
-    EXPECT_EQ(f.scene->getSolverIterations(), 10);
+    EXPECT_EQ(settingsOf(f.scene)->getSolverIterations(), 10);
     // A fresh scene starts at the documented default.
     iPhysicsScene* fresh = CreatePhysicsScene(nullptr);
-    EXPECT_EQ(fresh->getSolverIterations(), 4);
+    EXPECT_EQ(settingsOf(fresh)->getSolverIterations(), 4);
     fresh->Delete();
 }

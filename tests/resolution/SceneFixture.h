@@ -5,6 +5,7 @@
 #include "World.h"
 #include "iPhysicsFrame.h"
 #include "iPhysicsScene.h"
+#include "iPhysicsSceneSettings.h"
 #include "iRigidBody.h"
 
 #include <cmath>
@@ -20,7 +21,7 @@ class SceneFixture {
 public:
     explicit SceneFixture(int iterations = 10) {
         scene = CreatePhysicsScene(nullptr);
-        scene->setSolverIterations(iterations);
+        settingsOf(scene)->setSolverIterations(iterations);
         scene->update(0); // the first update sets the time base
         world = new World(scene);
     }

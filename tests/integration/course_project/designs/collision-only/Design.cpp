@@ -59,7 +59,9 @@ public:
 
 private:
     void sync() {
-        if (m_frame) m_frame->setWorldTransform(translation(m_d.position.x, m_d.position.y, m_d.position.z));
+        if (!m_frame) return;
+        Vector move = m_d.position - m_frame->position(); // a root frame: T's translation is world space
+        m_frame->translate(move.x, move.y, move.z);
     }
     RBDynamics m_d;
     iFrame* m_frame;

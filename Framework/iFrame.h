@@ -1,8 +1,10 @@
-// iFrame.h - the interface to a reference frame: a homogeneous transform T relative to an optional parent.
+// iFrame.h - the stand-in framework's reference frame: a homogeneous transform T relative to an optional
+// parent (the course framework's iFrame).
 //
-// The course framework's frame, as physics sees it: a rigid body drives an attached iFrame's T so that the
-// frame (and any object attached to it) follows the body. Row-vector convention: world = T * parent->world(),
-// translation in the m41..m43 row (see MathDeclarations.h).
+// A course project has its own iFrame.h; the packages never overwrite it. The engine drives a frame with the
+// framework's own members only: world() to read it, orient(), rotation(), position() and translate() to move
+// it (Physics/FrameDriver.cpp). Row-vector convention: world = T * parent->world(), translation in the
+// m41..m43 row (see MathDeclarations.h).
 #pragma once
 
 #include "MathDeclarations.h"
@@ -25,10 +27,6 @@ public:
     virtual Vector orientation(const Vector& v) const = 0; // local direction v in world space
     virtual Matrix world() const = 0;                      // the full world transform
     virtual Vector relativePosition() const = 0;           // T's translation (parent space)
-    // T itself, and setters used by physics to drive the frame.
-    virtual const Matrix& transform() const = 0;
-    virtual void setTransform(const Matrix& t) = 0;
-    virtual void setWorldTransform(const Matrix& world) = 0; // T re-expressed relative to the parent
     // Attaching keeps the world pose (T is re-expressed relative to the new parent); nullptr detaches.
     // Attaching to itself or to one of its own descendants is refused with error().
     virtual void attachTo(iFrame* newParent) = 0;

@@ -1,7 +1,8 @@
-// Frame.h - the framework's concrete reference frame, header-only so every package can derive from it.
+// Frame.h - the stand-in framework's concrete reference frame (the course framework's Frame).
 //
 // iPhysicsFrame derives from Frame (as in the seed), and the framework's objects do too. A Frame keeps T and
-// a parent pointer; world() walks the chain. It does not track children: delete children first.
+// a parent pointer; world() walks the chain. It does not track children: delete children first. A course
+// project has its own Frame; the engine uses only its public iFrame members and its default constructor.
 #pragma once
 
 #include "MathDeclarations.h"
@@ -35,15 +36,13 @@ public:
     Matrix world() const override { return m_parent ? m_T * m_parent->world() : m_T; }
     Vector relativePosition() const override { return m_T.position(); }
 
-    const Matrix& transform() const override { return m_T; }
-    void setTransform(const Matrix& t) override {
+    // T itself (not on iFrame: the course framework has no such members).
+    const Matrix& transform() const { return m_T; }
+    void setTransform(const Matrix& t) {
         if (t.isFinite())
             m_T = t;
         else
             error(L"Frame::setTransform: non-finite transform refused");
-    }
-    void setWorldTransform(const Matrix& w) override {
-        setTransform(m_parent ? w * m_parent->world().inverse() : w);
     }
 
     void attachTo(iFrame* newParent) override {

@@ -1,23 +1,22 @@
-// RBDynamicsDefinitions.h - inline definitions of RBDynamics' functions (included by RBDynamics.h).
+// RBDynamics.cpp - RBDynamics' functions: inertia, impulses, and attachment chains (composite bodies).
 //
-// Header-only because both the simulator and the collision detector read RBDynamics and each package must
-// carry it. Composite (attached) bodies: an attached body's world pose follows its parent chain, and
-// impulses and getMass act on the whole composite (see RBDynamics.h).
-#pragma once
-
-#include "MathDefinitions.h"
+// Compiled once per package (both the simulator and the collision detector read RBDynamics). Composite
+// (attached) bodies: an attached body's world pose follows its parent chain, and impulses and getMass act on
+// the whole composite (see RBDynamics.h). Eigen is used in here only.
 #include "RBDynamics.h"
+
+#include "MathEigen.h"
 #include "iUtilities.h"
 
 #include <cmath>
 
-inline RBDynamics::RBDynamics() : m_inertia(getSphereInertiaTensor(1.0f, 1.0f)), m_inverseInertia(1) {
+RBDynamics::RBDynamics() : m_inertia(getSphereInertiaTensor(1.0f, 1.0f)), m_inverseInertia(1) {
     m_inverseInertia = m_inertia.inverse();
 }
 
-inline RBDynamics::RBDynamics(const RBDynamics& src) { *this = src; }
+RBDynamics::RBDynamics(const RBDynamics& src) { *this = src; }
 
-inline RBDynamics& RBDynamics::operator=(const RBDynamics& src) {
+RBDynamics& RBDynamics::operator=(const RBDynamics& src) {
     if (this == &src) return *this;
     position = src.position;
     velocity = src.velocity;
@@ -41,30 +40,28 @@ inline RBDynamics& RBDynamics::operator=(const RBDynamics& src) {
     return *this;
 }
 
-inline RBDynamics::~RBDynamics() {
+RBDynamics::~RBDynamics() {
     while (m_firstChild) m_firstChild->attachTo(nullptr);
     unlinkFromParent();
 }
 
-inline Vector RBDynamics::getWorldCOM() const { return getWorldPosition(); }
+Vector RBDynamics::getWorldCOM() const { return getWorldPosition(); }
 
-inline Vector RBDynamics::getVelocityAtWorldPoint(const Vector& p) const {
+Vector RBDynamics::getVelocityAtWorldPoint(const Vector& p) const {
     const RBDynamics* root = attachmentRoot();
     return root->velocity + cross(root->angularVelocity, p - root->position);
 }
 
-namespace guardian_detail {
-inline bool isValidInertia(const Matrix& i) {
+bool isValidInertiaTensor(const Matrix& i) {
     gmath::Mat3 t = gmath::block3(i);
     if (!t.allFinite()) return false;
     if ((t - t.transpose()).cwiseAbs().maxCoeff() > 1e-4f * (1.0f + t.cwiseAbs().maxCoeff())) return false;
     Eigen::SelfAdjointEigenSolver<gmath::Mat3> eig(t);
     return eig.eigenvalues().minCoeff() > 0.0f;
 }
-} // namespace guardian_detail
 
-inline void RBDynamics::setInertiaTensor(const Matrix& i) {
-    if (!guardian_detail::isValidInertia(i)) {
+void RBDynamics::setInertiaTensor(const Matrix& i) {
+    if (!isValidInertiaTensor(i)) {
         error(
             L"RBDynamics::setInertiaTensor: tensor is not finite, symmetric and positive definite; refused");
         return;
@@ -73,8 +70,8 @@ inline void RBDynamics::setInertiaTensor(const Matrix& i) {
     m_inverseInertia = gmath::fromBlock3(gmath::block3(i).inverse());
 }
 
-inline void RBDynamics::setInverseInertiaTensor(const Matrix& i) {
-    if (!guardian_detail::isValidInertia(i)) {
+void RBDynamics::setInverseInertiaTensor(const Matrix& i) {
+    if (!isValidInertiaTensor(i)) {
         error(L"RBDynamics::setInverseInertiaTensor: tensor is not finite, symmetric and positive definite; "
               L"refused");
         return;
@@ -83,17 +80,17 @@ inline void RBDynamics::setInverseInertiaTensor(const Matrix& i) {
     m_inertia = gmath::fromBlock3(gmath::block3(i).inverse());
 }
 
-inline Matrix& RBDynamics::getInertiaTensor() { return m_inertia; }
-inline Matrix& RBDynamics::getInverseInertiaTensor() { return m_inverseInertia; }
-inline const Matrix& RBDynamics::getInertiaTensor() const { return m_inertia; }
-inline const Matrix& RBDynamics::getInverseInertiaTensor() const { return m_inverseInertia; }
+Matrix& RBDynamics::getInertiaTensor() { return m_inertia; }
+Matrix& RBDynamics::getInverseInertiaTensor() { return m_inverseInertia; }
+const Matrix& RBDynamics::getInertiaTensor() const { return m_inertia; }
+const Matrix& RBDynamics::getInverseInertiaTensor() const { return m_inverseInertia; }
 
-inline Matrix RBDynamics::getWorldInverseInertiaTensor() const {
+Matrix RBDynamics::getWorldInverseInertiaTensor() const {
     Matrix r = getWorldOrientation();
     return r.transpose() * m_inverseInertia * r;
 }
 
-inline void RBDynamics::ApplyImpulse(const Vector& impulse, const Vector& point) {
+void RBDynamics::ApplyImpulse(const Vector& impulse, const Vector& point) {
     if (!impulse.isFinite() || !point.isFinite()) {
         error(L"RBDynamics::ApplyImpulse: non-finite impulse or point refused");
         return;
@@ -112,7 +109,7 @@ inline void RBDynamics::ApplyImpulse(const Vector& impulse, const Vector& point)
     root->angularVelocity = root->angularMomentum * mp.inverseInertia;
 }
 
-inline RBDynamics::MassProperties RBDynamics::getCompositeMassProperties() const {
+RBDynamics::MassProperties RBDynamics::getCompositeMassProperties() const {
     // First pass: mass and centre; second pass: inertia about that centre (parallel-axis theorem), each
     // part's tensor turned to world axes (R^T I R for row vectors). Iterative depth-first walks, accumulated
     // in double.
@@ -155,27 +152,27 @@ inline RBDynamics::MassProperties RBDynamics::getCompositeMassProperties() const
 }
 
 // --- attachment chains ---
-inline RBDynamics* RBDynamics::attachedTo() const { return m_parent; }
+RBDynamics* RBDynamics::attachedTo() const { return m_parent; }
 
-inline RBDynamics* RBDynamics::attachmentRoot() const {
+RBDynamics* RBDynamics::attachmentRoot() const {
     const RBDynamics* r = this;
     while (r->m_parent) r = r->m_parent;
     return const_cast<RBDynamics*>(r);
 }
 
-inline Vector RBDynamics::getWorldPosition() const {
+Vector RBDynamics::getWorldPosition() const {
     return m_parent ? position * m_parent->getWorldOrientation() + m_parent->getWorldPosition() : position;
 }
 
-inline Matrix RBDynamics::getWorldOrientation() const {
+Matrix RBDynamics::getWorldOrientation() const {
     return m_parent ? orientation * m_parent->getWorldOrientation() : orientation;
 }
 
-inline Vector RBDynamics::getWorldOrigin() const {
+Vector RBDynamics::getWorldOrigin() const {
     return getWorldPosition() - getWorldOrientation().direction(com);
 }
 
-inline float RBDynamics::getMass() const {
+float RBDynamics::getMass() const {
     // Sum over the tree rooted at the chain's root (iterative depth-first walk).
     const RBDynamics* root = attachmentRoot();
     float total = 0.0f;
@@ -192,7 +189,7 @@ inline float RBDynamics::getMass() const {
     return total;
 }
 
-inline void RBDynamics::unlinkFromParent() {
+void RBDynamics::unlinkFromParent() {
     if (!m_parent) return;
     RBDynamics** link = &m_parent->m_firstChild;
     while (*link && *link != this) link = &(*link)->m_nextSibling;
@@ -201,7 +198,7 @@ inline void RBDynamics::unlinkFromParent() {
     m_nextSibling = nullptr;
 }
 
-inline void RBDynamics::attachTo(RBDynamics* p) {
+void RBDynamics::attachTo(RBDynamics* p) {
     for (const RBDynamics* a = p; a; a = a->m_parent) {
         if (a == this) {
             error(L"RBDynamics::attachTo: attaching a body to itself or to a descendant refused");

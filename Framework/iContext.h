@@ -1,4 +1,6 @@
-// iContext.h - the interface to the engine's settings store, which modules read when they are created.
+// iContext.h - the stand-in framework's settings store (the course framework's iContext): typed key/value
+// pairs the engine and designs read. The physics scene does not read it: a course project's iContext has
+// keys of its own, so the engine takes its knobs through settingsOf(scene) instead.
 //
 // A typed key/value store in the course framework's style: set(key, value) and get(key). A key that was
 // never set reads as 0 (or the zero vector), which every module takes to mean "use your default".
@@ -7,22 +9,19 @@
 #include "MathDeclarations.h"
 
 enum Integer {
-    GF_PHYS_STEP_RATE,         // fixed physics steps per second (default 60)
-    GF_PHYS_MAX_STEPS,         // most steps one update(now) may take to catch up (default 8)
-    GF_PHYS_INTEGRATOR,        // an Integrator value (iPhysicsSettings.h); 0 = the default
-    GF_PHYS_SOLVER_ITERATIONS, // contact solver iterations (sub-steps) per step (default 4)
-    GF_FRAMES,                 // headless runs: frames to run
-    GF_FRAME_MS,               // headless runs: milliseconds a frame
+    GF_FRAMES,   // headless runs: frames to run
+    GF_FRAME_MS, // headless runs: milliseconds a frame
     GF_NO_INTEGERS
 };
 
 enum Float {
-    GF_PHYS_DUMMY_FLOAT, // reserved
+    GF_FRAME_SECONDS, // headless runs: seconds a frame (informational)
     GF_NO_FLOATS
 };
 
 enum VectorId {
-    GF_PHYS_GRAVITY, // gravity (m/s^2); unset means (0, -9.81, 0)
+    GF_GRAVITY, // the game's idea of gravity (m/s^2), for designs that read it; the physics scene's gravity
+                // is set with settingsOf(scene)->setGravity
     GF_NO_VECTORS
 };
 

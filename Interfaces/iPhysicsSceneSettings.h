@@ -1,0 +1,50 @@
+// iPhysicsSceneSettings.h - the simulator's knobs: gravity, step rate, integrator, solver, sleeping.
+//
+// Not part of the seed's iPhysicsScene, so that a game's own stand-in scene need not implement them. The
+// scene made by CreatePhysicsScene implements this interface too; settingsOf(scene) reaches it (nullptr for
+// any other scene). Setters refuse invalid values with error(), keep the old value and return false.
+#pragma once
+
+#include "MathDeclarations.h"
+#include "iContactSettings.h"
+#include "iPhysicsScene.h"
+#include "iPhysicsSettings.h"
+
+class iPhysicsSceneSettings {
+public:
+    virtual bool setGravity(const Vector& g) = 0; // default (0, -9.81, 0); GF_PHYS_GRAVITY
+    virtual Vector getGravity() const = 0;
+    // Fixed steps per second, 1..10000 (default 60; GF_PHYS_STEP_RATE).
+    virtual bool setStepRate(int hz) = 0;
+    virtual int getStepRate() const = 0;
+    // Most steps one update may take, >= 1 (default 8; GF_PHYS_MAX_STEPS).
+    virtual bool setMaxStepsPerUpdate(int n) = 0;
+    virtual int getMaxStepsPerUpdate() const = 0;
+    virtual bool setIntegrator(Integrator i) = 0; // GF_PHYS_INTEGRATOR
+    virtual Integrator getIntegrator() const = 0;
+    // Contact resolution, when a collision space is set: solver iterations a step, 1..1000 (default 4;
+    // GF_PHYS_SOLVER_ITERATIONS). Each iteration is a sub-step of the contact solve (a sweep that pushes
+    // overlap out, a move, a relaxing sweep): more of them, stiffer stacks at proportionally more cost.
+    virtual bool setSolverIterations(int n) = 0;
+    virtual int getSolverIterations() const = 0;
+    // How two bodies' friction and restitution combine (iContactSettings.h; defaults COMBINE_Sum,
+    // COMBINE_Max).
+    virtual bool setFrictionRule(CombineRule r) = 0;
+    virtual bool setRestitutionRule(CombineRule r) = 0;
+    // Sleeping (default on): an island of touching bodies that stayed under 0.05 m/s and 0.05 rad/s for
+    // 0.5 s stops being integrated and solved until a contact with an awake body, a force, a torque, a new
+    // velocity or a new pose wakes it.
+    virtual void setSleepingEnabled(bool on) = 0;
+
+protected:
+    ~iPhysicsSceneSettings() = default; // part of a scene: Delete() the scene
+};
+
+// The settings of a scene made by CreatePhysicsScene; nullptr for a scene that has none (a game's own).
+// A cross-cast to this public interface, not to the simulator's class: any implementation may provide it.
+inline iPhysicsSceneSettings* settingsOf(iPhysicsScene* scene) {
+    return dynamic_cast<iPhysicsSceneSettings*>(scene);
+}
+inline const iPhysicsSceneSettings* settingsOf(const iPhysicsScene* scene) {
+    return dynamic_cast<const iPhysicsSceneSettings*>(scene);
+}
