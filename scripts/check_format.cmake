@@ -7,7 +7,8 @@ foreach(d ${dirs})
   file(GLOB_RECURSE found "${ROOT}/${d}/*.h" "${ROOT}/${d}/*.cpp")
   list(APPEND files ${found})
 endforeach()
-list(FILTER files EXCLUDE REGEX "/fixtures/")
+# fixtures, and the test course host: a stand-in for someone else's code, kept in its own style.
+list(FILTER files EXCLUDE REGEX "/fixtures/|/course_host/framework/")
 execute_process(COMMAND ${CLANG_FORMAT} --dry-run --Werror ${files}
   WORKING_DIRECTORY ${ROOT} RESULT_VARIABLE rc ERROR_VARIABLE err)
 if(NOT rc EQUAL 0)

@@ -3,4 +3,4 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 find Interfaces Physics Collision Framework ReferenceGame tests bench packages \
-  \( -name '*.h' -o -name '*.cpp' \) -not -path '*/fixtures/*' -print0 | xargs -0 -r clang-format -i
+  \( -name '*.h' -o -name '*.cpp' \) -not -path '*/fixtures/*' -not -path '*/course_host/framework/*' -print0 | xargs -0 -r clang-format -i
