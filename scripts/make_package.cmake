@@ -23,6 +23,10 @@ endforeach()
 list(JOIN files "\n" manifest)
 file(WRITE "${dest}/MANIFEST.txt" "${manifest}\n")
 file(COPY "${ROOT}/packages/${NAME}/INTEGRATION.md" DESTINATION "${dest}")
+# example/: INTEGRATION.md's program, built from this package alone (plus Eigen).
+if(EXISTS "${ROOT}/packages/${NAME}/example")
+  file(COPY "${ROOT}/packages/${NAME}/example" DESTINATION "${dest}")
+endif()
 execute_process(COMMAND ${CMAKE_COMMAND} -E tar czf "${OUT}/${NAME}.tar.gz" "${NAME}"
   WORKING_DIRECTORY "${OUT}" RESULT_VARIABLE rc)
 if(NOT rc EQUAL 0)

@@ -1,0 +1,26 @@
+# Builds a package's example/ from the generated package alone (its own folders, Standalone/ and Eigen;
+# nothing else of this repository) and runs it: the example checks its own physics and exits non-zero when
+# a check fails.
+# Run as: cmake -DROOT=<repo> -DPACKAGE=<name> -DWORK=<scratch dir> -P run_example.cmake
+cmake_minimum_required(VERSION 3.20)
+file(REMOVE_RECURSE "${WORK}")
+execute_process(COMMAND ${CMAKE_COMMAND} -DROOT=${ROOT} -DNAME=${PACKAGE} -DOUT=${WORK}
+                        -P ${ROOT}/scripts/make_package.cmake RESULT_VARIABLE rc OUTPUT_QUIET)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "could not generate package ${PACKAGE}")
+endif()
+set(example "${WORK}/${PACKAGE}/example")
+execute_process(COMMAND ${CMAKE_COMMAND} -S "${example}" -B "${WORK}/build" -DCMAKE_BUILD_TYPE=Debug
+                        -DCMAKE_UNITY_BUILD=ON "-DCMAKE_CXX_FLAGS=-Wall -Wextra -Wpedantic -Werror"
+                        RESULT_VARIABLE rc OUTPUT_QUIET)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "the ${PACKAGE} example did not configure")
+endif()
+execute_process(COMMAND ${CMAKE_COMMAND} --build "${WORK}/build" -j 2 RESULT_VARIABLE rc)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "the ${PACKAGE} example did not build from its package alone")
+endif()
+execute_process(COMMAND "${WORK}/build/example" RESULT_VARIABLE rc)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "the ${PACKAGE} example ran, but its checks failed (${rc})")
+endif()
