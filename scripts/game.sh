@@ -20,7 +20,7 @@ USAGE
   fi
 done
 scripts/install-deps.sh
-echo "game.sh: building the reference game (Release, build-release/; the first build takes a minute or two)..." >&2
+echo "game.sh: building the reference game (Release, build-release/; a first build takes minutes)" >&2
 cmake -S . -B build-release -DCMAKE_BUILD_TYPE=Release -DGUARDIAN_BUILD_TESTS=OFF >/dev/null
 cmake --build build-release --target ReferenceGame -j "$(nproc 2>/dev/null || echo 2)" >/dev/null
 exec build-release/ReferenceGame/ReferenceGame "$@"
