@@ -1,9 +1,10 @@
 // main.cpp - the reference game, headless: the course engine loop (physicsScene->update(now), then
 // design->update(now)) on a stepped 16 ms clock, for one named scene or all of them.
 //
-// Usage: ReferenceGame [--scene NAME|all] [--frames N] [--list]
-// Exit status: 0 when every scene held together, 1 when one blew up (NaN, energy growth, deep penetration),
-// 2 on bad arguments.
+// Usage: ReferenceGame [--scene NAME|all] [--frames N] [--list] [--help]
+// Each scene ends with a verdict line on stdout: "OK <scene>" or "FAIL <scene>: <reason>".
+// Exit status: 0 when every scene held together (and for --list, --help), 1 when one blew up (NaN, energy
+// growth, deep penetration), 2 on bad arguments.
 #include "GameDesign.h"
 #include "Scenes.h"
 #include "iClock.h"
@@ -18,8 +19,17 @@
 
 namespace {
 
-int usage() {
-    std::fprintf(stderr, "usage: ReferenceGame [--scene NAME|all] [--frames N] [--list]\n");
+const char* const kUsage =
+    "usage: ReferenceGame [--scene NAME|all] [--frames N] [--list] [--help]\n"
+    "  --scene NAME|all  the scene to run, or every scene in turn (default: pyramid)\n"
+    "  --frames N        frames per scene on a stepped 16 ms clock, N > 0 (default: 600, about 10 s)\n"
+    "  --list            name and describe the scenes, then exit\n"
+    "  --help            print this and exit\n"
+    "Each scene ends with \"OK <scene>\" or \"FAIL <scene>: <reason>\".\n"
+    "Exit status: 0 every scene held together, 1 a scene blew up, 2 bad arguments.\n";
+
+int usage() { // bad arguments
+    std::fputs(kUsage, stderr);
     return 2;
 }
 
@@ -30,7 +40,13 @@ bool runScene(const SceneSpec& spec, int frames) {
     iEngine* engine = CreateEngine(context, design, scene, CreateSteppedClock(16));
     engine->setup();
     engine->run(frames);
-    bool ok = design->failure() == nullptr;
+    const char* failure = design->failure();
+    if (failure)
+        std::printf("FAIL %s: %s\n", spec.name, failure);
+    else
+        std::printf("OK %s\n", spec.name);
+    std::fflush(stdout);
+    bool ok = failure == nullptr;
     engine->Delete(); // deletes the design, then the scene
     context->Delete();
     return ok;
@@ -47,6 +63,9 @@ int main(int argc, char** argv) {
         } else if (!std::strcmp(argv[i], "--frames") && i + 1 < argc) {
             frames = std::atoi(argv[++i]);
             if (frames <= 0) return usage();
+        } else if (!std::strcmp(argv[i], "--help") || !std::strcmp(argv[i], "-h")) {
+            std::fputs(kUsage, stdout);
+            return 0;
         } else if (!std::strcmp(argv[i], "--list")) {
             for (const SceneSpec& s : allScenes()) std::printf("%-10s %s\n", s.name, s.description);
             return 0;

@@ -1,7 +1,8 @@
 # Builds a package's example/ from the generated package alone (its own folders, Standalone/ and Eigen;
 # nothing else of this repository) and runs it: the example checks its own physics and exits non-zero when
 # a check fails.
-# Run as: cmake -DROOT=<repo> -DPACKAGE=<name> -DWORK=<scratch dir> -P run_example.cmake
+# Run as: cmake -DROOT=<repo> -DPACKAGE=<name> -DWORK=<scratch dir> [-DCHECKER=<program>] -P run_example.cmake
+# (CHECKER: a program that runs the example and checks what it prints).
 cmake_minimum_required(VERSION 3.20)
 file(REMOVE_RECURSE "${WORK}")
 execute_process(COMMAND ${CMAKE_COMMAND} -DROOT=${ROOT} -DNAME=${PACKAGE} -DOUT=${WORK}
@@ -20,7 +21,11 @@ execute_process(COMMAND ${CMAKE_COMMAND} --build "${WORK}/build" -j 2 RESULT_VAR
 if(NOT rc EQUAL 0)
   message(FATAL_ERROR "the ${PACKAGE} example did not build from its package alone")
 endif()
-execute_process(COMMAND "${WORK}/build/example" RESULT_VARIABLE rc)
+if(CHECKER)
+  execute_process(COMMAND "${CHECKER}" "${WORK}/build/example" RESULT_VARIABLE rc)
+else()
+  execute_process(COMMAND "${WORK}/build/example" RESULT_VARIABLE rc)
+endif()
 if(NOT rc EQUAL 0)
   message(FATAL_ERROR "the ${PACKAGE} example ran, but its checks failed (${rc})")
 endif()
