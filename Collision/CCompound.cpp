@@ -43,6 +43,7 @@ public:
         c.offset = offset;
         c.radius = radius;
         m_children.push_back(c);
+        shapeChanged();
         return true;
     }
     bool addBox(const Vector& offset, const Matrix& rotation, const Vector& h) override {
@@ -58,10 +59,23 @@ public:
         c.rotation = rotation.rotation();
         c.half = h;
         m_children.push_back(c);
+        shapeChanged();
         return true;
     }
     size_t getNumChildren() const override { return m_children.size(); }
-    void clearChildren() override { m_children.clear(); }
+    void clearChildren() override {
+        m_children.clear();
+        shapeChanged();
+    }
+    // The children as one solid of uniform density (overlaps count twice), about the compound's centroid.
+    ShapeMass shapeMass() const override {
+        std::vector<ShapeMass> parts;
+        parts.reserve(m_children.size());
+        for (const Child& c : m_children)
+            parts.push_back(c.kind == gcol::ShapeKind::Sphere ? sphereShapeMass(c.radius, c.offset)
+                                                              : boxShapeMass(c.half, c.offset, c.rotation));
+        return combineShapeMass(parts.data(), parts.size());
+    }
     void worldShapes(const Vector& origin, const Matrix& r,
                      std::vector<gcol::WorldShape>& out) const override {
         for (const Child& c : m_children) {

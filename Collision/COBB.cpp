@@ -28,7 +28,9 @@ public:
             return;
         }
         m_half = h;
+        shapeChanged();
     }
+    ShapeMass shapeMass() const override { return boxShapeMass(m_half); }
     void worldShapes(const Vector& origin, const Matrix& r,
                      std::vector<gcol::WorldShape>& out) const override {
         gcol::WorldShape s;

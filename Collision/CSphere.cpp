@@ -25,7 +25,9 @@ public:
             return;
         }
         m_radius = radius;
+        shapeChanged();
     }
+    ShapeMass shapeMass() const override { return sphereShapeMass(m_radius); }
     void worldShapes(const Vector& origin, const Matrix&, std::vector<gcol::WorldShape>& out) const override {
         gcol::WorldShape s;
         s.kind = gcol::ShapeKind::Sphere;

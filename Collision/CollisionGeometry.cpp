@@ -5,11 +5,27 @@
 
 CollisionGeometry::CollisionGeometry() { watchRigidBodies(&CollisionGeometry::onBodyDestroyed, this); }
 
-CollisionGeometry::~CollisionGeometry() { unwatchRigidBodies(&CollisionGeometry::onBodyDestroyed, this); }
+CollisionGeometry::~CollisionGeometry() {
+    unwatchRigidBodies(&CollisionGeometry::onBodyDestroyed, this);
+    if (m_body) m_body->getDynamics().removeShapeMass(this);
+}
 
 void CollisionGeometry::onBodyDestroyed(const iRigidBody* dying, void* self) {
     auto* g = static_cast<CollisionGeometry*>(self);
-    if (g->m_body == dying) g->bind(nullptr);
+    if (g->m_body != dying) return;
+    g->m_body = nullptr; // the body is going: its dynamics are not touched
+    g->m_state.hasPrevious = false;
+}
+
+void CollisionGeometry::bind(iRigidBody* rb) {
+    if (m_body && m_body != rb) m_body->getDynamics().removeShapeMass(this);
+    m_body = rb;
+    m_state.hasPrevious = false;
+    shapeChanged();
+}
+
+void CollisionGeometry::shapeChanged() {
+    if (m_body) m_body->getDynamics().setShapeMass(this, shapeMass());
 }
 
 void CollisionGeometry::joinDefaultSpace() {

@@ -6,6 +6,7 @@
 // does not derive from it cannot be added to this package's spaces.
 #pragma once
 
+#include "RBDynamics.h"
 #include "Shapes.h"
 #include "iCollisionGeometry.h"
 #include "iCollisionSpace.h"
@@ -30,6 +31,9 @@ public:
     virtual iCollisionGeometry* asInterface() = 0;
     // True for a plane: infinite, and static when it has no body.
     virtual bool isPlane() const { return false; }
+    // The solid this geometry is, for its body's inertia (RBDynamics::setShapeMass): volume 0 for none (a
+    // plane, an empty compound).
+    virtual ShapeMass shapeMass() const { return ShapeMass(); }
 
     // The body pose this geometry is at now: false (pose left unset) when the body's dynamics are not
     // finite. A bodiless geometry is at the world origin.
@@ -49,10 +53,9 @@ public:
     void setSpace(iCollisionSpace* s) { m_space = s; }
     iCollisionSpace* space() const { return m_space; }
     iRigidBody* body() const { return m_body; }
-    void bind(iRigidBody* rb) {
-        m_body = rb;
-        m_state.hasPrevious = false;
-    }
+    // Binds to rb (nullptr: none). The geometry's solid moves from the old body's shape to rb's, so an
+    // inertia the engine derives follows it (RBDynamics.h).
+    void bind(iRigidBody* rb);
 
 protected:
     CollisionGeometry();
@@ -61,6 +64,8 @@ protected:
     void joinDefaultSpace();
     // Leaves the space (deferred if that space is busy notifying listeners) and deletes this.
     void destroy() const;
+    // Tells the body the geometry's solid changed (a new radius, a child added).
+    void shapeChanged();
 
 private:
     friend class SimpleCollisionSpace; // deletes geometry whose Delete() it deferred

@@ -12,6 +12,9 @@
 
 RBDynamics::RBDynamics() : m_inertia(getSphereInertiaTensor(1.0f, 1.0f)), m_inverseInertia(1) {
     m_inverseInertia = m_inertia.inverse();
+    m_derivedInertia = m_inertia;
+    m_derivedInverse = m_inverseInertia;
+    updateInertia();
 }
 
 RBDynamics::RBDynamics(const RBDynamics& src) { *this = src; }
@@ -37,6 +40,11 @@ RBDynamics& RBDynamics::operator=(const RBDynamics& src) {
     temporalTorque = src.temporalTorque;
     m_inertia = src.m_inertia;
     m_inverseInertia = src.m_inverseInertia;
+    m_inertiaFromGame = src.m_inertiaFromGame;
+    m_derivedInertia = src.m_derivedInertia;
+    m_derivedInverse = src.m_derivedInverse;
+    if (m_shapeParts.empty()) m_shape = src.m_shape; // a body with geometries keeps its own shape
+    m_shapeDirty = true;                             // derived again at the next updateInertia()
     return *this;
 }
 
@@ -68,6 +76,7 @@ void RBDynamics::setInertiaTensor(const Matrix& i) {
     }
     m_inertia = gmath::fromBlock3(gmath::block3(i));
     m_inverseInertia = gmath::fromBlock3(gmath::block3(i).inverse());
+    m_inertiaFromGame = true;
 }
 
 void RBDynamics::setInverseInertiaTensor(const Matrix& i) {
@@ -78,6 +87,131 @@ void RBDynamics::setInverseInertiaTensor(const Matrix& i) {
     }
     m_inverseInertia = gmath::fromBlock3(gmath::block3(i));
     m_inertia = gmath::fromBlock3(gmath::block3(i).inverse());
+    m_inertiaFromGame = true;
+}
+
+// --- inertia from shape and mass ---
+namespace {
+// m (|d|^2 1 - d d^T): the parallel-axis term for an offset d.
+Eigen::Matrix3d parallelAxis(double m, const Eigen::Vector3d& d) {
+    return m * (d.squaredNorm() * Eigen::Matrix3d::Identity() - d * d.transpose());
+}
+} // namespace
+
+ShapeMass sphereShapeMass(float r, const Vector& centre) {
+    ShapeMass s;
+    s.volume = float(4.0 / 3.0 * 3.14159265358979 * double(r) * r * r);
+    s.centroid = centre;
+    s.unitInertia = getSphereInertiaTensor(1.0f, r);
+    return s;
+}
+
+ShapeMass boxShapeMass(const Vector& h, const Vector& centre, const Matrix& rotation) {
+    ShapeMass s;
+    s.volume = 8.0f * h.x * h.y * h.z;
+    s.centroid = centre;
+    // Row vectors: w_box = w_body R^T, so the body-axes tensor is R^T I_box R.
+    gmath::Mat3 r = gmath::block3(rotation);
+    s.unitInertia = gmath::fromBlock3(r.transpose() * gmath::block3(getBoxInertiaTensor(1.0f, h)) * r);
+    return s;
+}
+
+ShapeMass combineShapeMass(const ShapeMass* parts, size_t n) {
+    ShapeMass out;
+    double volume = 0;
+    Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+    for (size_t i = 0; i < n; ++i) {
+        if (!(parts[i].volume > 0.0f)) continue;
+        volume += parts[i].volume;
+        centre += double(parts[i].volume) * gmath::map(parts[i].centroid).cast<double>();
+    }
+    if (!(volume > 0)) return out;
+    centre /= volume;
+    Eigen::Matrix3d inertia = Eigen::Matrix3d::Zero();
+    for (size_t i = 0; i < n; ++i) {
+        if (!(parts[i].volume > 0.0f)) continue;
+        double share = parts[i].volume / volume;
+        inertia += share * gmath::block3(parts[i].unitInertia).cast<double>();
+        inertia += parallelAxis(share, gmath::map(parts[i].centroid).cast<double>() - centre);
+    }
+    out.volume = float(volume);
+    out.centroid = Vector(float(centre.x()), float(centre.y()), float(centre.z()));
+    out.unitInertia = gmath::fromBlock3(inertia.cast<float>());
+    return out;
+}
+
+void RBDynamics::combineShapeParts() {
+    std::vector<ShapeMass> shapes;
+    shapes.reserve(m_shapeParts.size());
+    for (const ShapePart& p : m_shapeParts) shapes.push_back(p.shape);
+    m_shape = combineShapeMass(shapes.data(), shapes.size());
+    m_shapeDirty = true;
+    updateInertia();
+}
+
+void RBDynamics::setShapeMass(const void* owner, const ShapeMass& s) {
+    if (!(s.volume > 0.0f) || !std::isfinite(s.volume) || !s.centroid.isFinite() ||
+        !isValidInertiaTensor(s.unitInertia)) {
+        removeShapeMass(owner);
+        return;
+    }
+    for (ShapePart& p : m_shapeParts) {
+        if (p.owner == owner) {
+            p.shape = s;
+            combineShapeParts();
+            return;
+        }
+    }
+    m_shapeParts.push_back({owner, s});
+    combineShapeParts();
+}
+
+void RBDynamics::removeShapeMass(const void* owner) {
+    for (size_t i = 0; i < m_shapeParts.size(); ++i) {
+        if (m_shapeParts[i].owner == owner) {
+            m_shapeParts.erase(m_shapeParts.begin() + std::ptrdiff_t(i));
+            combineShapeParts();
+            return;
+        }
+    }
+}
+
+void RBDynamics::useShapeInertia() {
+    m_inertiaFromGame = false;
+    m_derivedInertia = m_inertia; // what is there now is not a write through a reference
+    m_derivedInverse = m_inverseInertia;
+    m_shapeDirty = true;
+    updateInertia();
+}
+
+bool RBDynamics::updateInertia() {
+    if (m_inertiaFromGame) return false;
+    if (m_inertia != m_derivedInertia || m_inverseInertia != m_derivedInverse) {
+        m_inertiaFromGame = true; // the game wrote through getInertiaTensor() / getInverseInertiaTensor()
+        return false;
+    }
+    // INFINITE_MASS (immovable) or an invalid mass or com (the simulator reports those): left as it is.
+    if (!(mass > 0.0f) || !(mass < INFINITE_MASS) || !com.isFinite()) return false;
+    if (!m_shapeDirty && mass == m_derivedMass && com == m_derivedCom) return false;
+    Eigen::Matrix3d unit;
+    if (m_shape.volume > 0.0f) {
+        Eigen::Vector3d d = (gmath::map(m_shape.centroid) - gmath::map(com)).cast<double>();
+        unit = gmath::block3(m_shape.unitInertia).cast<double>() + parallelAxis(1.0, d);
+    } else {
+        unit = 0.4 * Eigen::Matrix3d::Identity(); // no geometry: a solid sphere of radius 1 m
+    }
+    Eigen::Matrix3d inertia = double(mass) * unit;
+    Matrix tensor = gmath::fromBlock3(inertia.cast<float>());
+    if (!isValidInertiaTensor(tensor)) return false; // a mass so large or small that floats give out
+    Matrix inverse = gmath::fromBlock3(inertia.inverse().cast<float>());
+    if (!inverse.isFinite()) return false;
+    m_derivedMass = mass;
+    m_derivedCom = com;
+    m_shapeDirty = false;
+    bool changed = tensor != m_inertia || inverse != m_inverseInertia;
+    m_inertia = m_derivedInertia = tensor;
+    m_inverseInertia = m_derivedInverse = inverse;
+    return changed;
 }
 
 Matrix& RBDynamics::getInertiaTensor() { return m_inertia; }

@@ -24,6 +24,9 @@
 #include "MathDeclarations.h"
 #include "PhysicsConstants.h"
 
+#include <cstddef>
+#include <vector>
+
 enum PhysicsType {
     PHYS_Falling,      // moves under forces and gravity (the default)
     PHYS_Floating,     // moves under forces, feels no gravity
@@ -33,6 +36,23 @@ enum PhysicsType {
 // True when the 3x3 block of i is finite, symmetric and positive definite: a valid inertia tensor (or
 // inverse tensor).
 bool isValidInertiaTensor(const Matrix& i);
+
+// The mass distribution of a uniform solid, per kilogram: its volume (m^3), its centroid and its inertia per
+// kilogram about that centroid (3x3 in the upper-left), both in body-local axes relative to the body frame's
+// origin. A collision geometry describes itself with one to RBDynamics::setShapeMass.
+struct ShapeMass {
+    float volume = 0.0f;
+    Vector centroid;
+    Matrix unitInertia; // kg m^2 per kg
+};
+// A solid sphere of radius r (unitInertia 2/5 r^2) and a solid box of half extents h turned by rotation
+// (row-vector, box local -> body local), centred on centre.
+ShapeMass sphereShapeMass(float r, const Vector& centre = Vector());
+ShapeMass boxShapeMass(const Vector& h, const Vector& centre = Vector(), const Matrix& rotation = Matrix(1));
+// Several solids as one of uniform density: volumes add, the centroid is the volume-weighted mean, and each
+// part's inertia is weighted by its volume share and moved to that centroid by the parallel-axis theorem.
+// Parts with no volume are skipped; overlapping parts count twice. No part: a zero ShapeMass.
+ShapeMass combineShapeMass(const ShapeMass* parts, size_t n);
 
 struct RBDynamics {
     // --- properties (seed names and meanings) ---
@@ -86,13 +106,38 @@ struct RBDynamics {
     Vector getVelocityAtWorldPoint(const Vector& p) const;
     // Set either tensor (3x3 in the upper-left, body-local axes about the COM); the other is kept consistent.
     // A tensor that is not finite, symmetric and positive definite is refused with error() and nothing
-    // changes.
+    // changes. A tensor set here (or written through the getInertiaTensor() references) is the game's: it is
+    // kept as set whatever mass or geometry the body is given later, until useShapeInertia().
+    //
+    // Until then the tensor follows shape and mass: mass times the inertia per kilogram of the body's shape
+    // about its centre of mass. The shape is every collision geometry bound to the body together (spheres,
+    // boxes, compounds; a plane adds nothing), as one solid of uniform density (combineShapeMass); a body
+    // with no geometry is a solid sphere of radius 1 m centred on its COM (2/5 mass kg m^2). When the
+    // shape's centroid is not at com, the tensor is about com all the same: the parallel-axis term
+    // mass (|d|^2 1 - d d^T), d = centroid - com, is added. A geometry updates it at once when it is bound,
+    // resized or given children; the simulator brings it up to date with mass and com at the start of each
+    // step (call updateInertia() to see it sooner). The simulator keeps the angular velocity when a tensor
+    // changes (the momentum follows). With INFINITE_MASS (or an invalid mass) the tensor is left as it was:
+    // such a body is immovable, its inverse inertia counts as zero in every solve. A copy carries its
+    // source's shape until a geometry is bound to it.
     void setInverseInertiaTensor(const Matrix& i);
     void setInertiaTensor(const Matrix& i);
     Matrix& getInertiaTensor();
     Matrix& getInverseInertiaTensor();
     const Matrix& getInertiaTensor() const;
     const Matrix& getInverseInertiaTensor() const;
+    // Brings a derived tensor up to date with mass, com and shape; true if it changed. Does nothing to a
+    // tensor the game set (and notices one written through the references).
+    bool updateInertia();
+    bool isInertiaSetByGame() const { return m_inertiaFromGame; }
+    // Hands the tensor back to the engine: derived from shape and mass again, from now on.
+    void useShapeInertia();
+    // For collision geometries: owner (any unique address) contributes shape s to this body, replacing its
+    // previous contribution; a shape with no volume (or removeShapeMass) withdraws it.
+    void setShapeMass(const void* owner, const ShapeMass& s);
+    void removeShapeMass(const void* owner);
+    // The body's shape as it stands (volume 0: none, the 1 m sphere is used).
+    const ShapeMass& getShapeMass() const { return m_shape; }
     // Instantly changes linear and angular velocity (and momentum) by an impulse (N s) applied at a world
     // point. On an attached body it acts on the whole composite. Non-finite input is refused with error().
     void ApplyImpulse(const Vector& impulse, const Vector& pointOfApplication);
@@ -129,9 +174,23 @@ struct RBDynamics {
 private:
     Matrix m_inertia;        // body-local, about the COM
     Matrix m_inverseInertia; // its inverse
+    // Inertia from shape and mass. Not copied by operator=: the geometries bound to this body (m_shapeParts).
+    // Copied: the combined shape (unless the target has geometries of its own), the flag and the tensors.
+    struct ShapePart {
+        const void* owner;
+        ShapeMass shape;
+    };
+    std::vector<ShapePart> m_shapeParts;
+    ShapeMass m_shape;                         // their combination (volume 0: none)
+    bool m_inertiaFromGame = false;            // set by setInertiaTensor & co: never derived again
+    bool m_shapeDirty = true;                  // shape changed since the last derivation
+    float m_derivedMass = 0.0f;                // mass and com of the last derivation
+    Vector m_derivedCom;                       //
+    Matrix m_derivedInertia, m_derivedInverse; // what it wrote (a difference is a write through a reference)
     RBDynamics* m_parent = nullptr;
     RBDynamics* m_firstChild = nullptr;
     RBDynamics* m_nextSibling = nullptr;
 
     void unlinkFromParent();
+    void combineShapeParts();
 };

@@ -2,7 +2,9 @@
 //
 // Each child sits at an offset from the body frame's origin and (boxes) turns by a local rotation on top of
 // the body's orientation. Contacts name the compound itself as g1 or g2; getContactFeatureIds() tells the
-// children apart. A compound with no children never collides.
+// children apart. A compound with no children never collides. For its body's inertia the children are one
+// solid of uniform density (each child's mass share is its volume share; overlaps count twice), about
+// their common centroid.
 #pragma once
 
 #include <cstddef>

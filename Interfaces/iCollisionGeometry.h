@@ -24,7 +24,8 @@ enum CollisionType {
 class iCollisionGeometry {
 public:
     virtual iCollisionGeometry* clone() const = 0;
-    // Binds this geometry to a body (nullptr unbinds: an unbound geometry never collides).
+    // Binds this geometry to a body (nullptr unbinds: an unbound geometry never collides). The body's
+    // inertia follows its geometries (as one uniform solid) until the game sets a tensor: RBDynamics.h.
     virtual void attach(iRigidBody* rb) = 0;
     virtual iRigidBody* getRigidBody() = 0;
     virtual const iRigidBody* getRigidBody() const = 0;

@@ -272,10 +272,12 @@ void PhysicsScene::step(float dt) {
 
     // 2. Take in the game's edits: a moved frame teleports its body; an invalid state is reported and
     //    replaced by the body's last valid one; a sleeping body the game touched wakes. The pose now is where
-    //    this step's interpolation starts.
+    //    this step's interpolation starts. An inertia tensor the engine derives catches up with the mass and
+    //    com the game may have written (RBDynamics.h); integrateComposite then keeps the angular velocity.
     for (size_t i = 0; i < m_bodies.size(); ++i) {
         RigidBody* b = m_bodies[i];
         if (b->dying() || b->pendingRemoval) continue;
+        b->getDynamics().updateInertia();
         if (b->asleep() && !b->editedWhileAsleep()) {
             b->recordPreviousPose();
             continue;
