@@ -2,7 +2,7 @@
 //
 // Header-only because both the simulator and the collision detector read RBDynamics and each package must
 // carry it. Composite (attached) bodies: an attached body's world pose follows its parent chain, and
-// impulses and getMass act on the whole composite (see RBDynamics.h).
+// impulses and getCompositeMass act on the whole composite (see RBDynamics.h).
 #pragma once
 
 #include "MathDefinitions.h"
@@ -175,7 +175,9 @@ inline Vector RBDynamics::getWorldOrigin() const {
     return getWorldPosition() - getWorldOrientation().direction(com);
 }
 
-inline float RBDynamics::getMass() const {
+inline float RBDynamics::getMass() const { return attachmentRoot()->mass; }
+
+inline float RBDynamics::getCompositeMass() const {
     // Sum over the tree rooted at the chain's root (iterative depth-first walk).
     const RBDynamics* root = attachmentRoot();
     float total = 0.0f;
