@@ -7,6 +7,7 @@
 #include "PhysicsScene.h"
 #include "RigidBody.h"
 #include "iPhysicsFrame.h"
+#include "iUtilities.h"
 
 namespace physics {
 
@@ -55,4 +56,9 @@ private:
 
 } // namespace physics
 
-extern "C" iPhysicsFrame* CreatePhysicsFrame() { return new physics::PhysicsFrame(); }
+extern "C" iPhysicsFrame* CreatePhysicsFrame() {
+    if (!physics::PhysicsScene::active()) // the seed's order is scene first: say so while it can be fixed
+        error(L"CreatePhysicsFrame: no physics scene exists yet, so its body is not simulated; add() getRB() "
+              L"to a scene once there is one");
+    return new physics::PhysicsFrame();
+}

@@ -260,6 +260,11 @@ void PhysicsScene::update(int now) {
     if (m_accumulator >= 1000) { // the catch-up cap: drop the backlog, keep the partial step
         m_dropped += m_accumulator / 1000;
         m_accumulator %= 1000;
+        if (!m_reportedDrops && m_dropped >= m_stepRate) { // a second of simulated time lost: say so once
+            m_reportedDrops = true;
+            error(L"PhysicsScene::update: the catch-up cap (maxStepsPerUpdate) has dropped a second of "
+                  L"simulated time; the game runs slower than real time (reported once)");
+        }
     }
     if (m_deleteRequested) {
         delete this;

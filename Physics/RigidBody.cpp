@@ -178,6 +178,10 @@ void RigidBody::writeFrame(float alpha) {
 
 extern "C" iRigidBody* CreateRigidBody(iFrame* o) {
     physics::RigidBody* body = new physics::RigidBody(o);
-    if (physics::PhysicsScene* scene = physics::PhysicsScene::active()) scene->add(body);
+    if (physics::PhysicsScene* scene = physics::PhysicsScene::active())
+        scene->add(body);
+    else // the seed's order is scene first: say so now, not when the body silently never moves
+        error(L"CreateRigidBody: no physics scene exists yet, so this body is not simulated; add() it to a "
+              L"scene once there is one");
     return body;
 }
