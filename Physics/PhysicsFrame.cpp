@@ -41,6 +41,25 @@ public:
         b->attach(copy); // the frame takes the copied body's pose
         return copy;
     }
+    // The seed: attaching a PhysicsFrame to another also attaches its body to that frame's body (one
+    // composite, RBDynamics::attachTo); attaching to a plain frame or to nullptr detaches the body. Refused
+    // with error(), changing nothing, when either the frames or the bodies would form a cycle.
+    void attachTo(iFrame* parent) override {
+        auto* pf = dynamic_cast<PhysicsFrame*>(parent);
+        RBDynamics& d = m_body->getDynamics();
+        for (const RBDynamics* a = pf ? &pf->m_body->getDynamics() : nullptr; a; a = a->attachedTo()) {
+            if (a == &d) {
+                error(L"PhysicsFrame::attachTo: the parent's body is attached to this one's; refused");
+                return;
+            }
+        }
+        m_body->adoptFrameEdits(); // moves the game made to either frame count before the bodies link
+        if (pf) pf->m_body->adoptFrameEdits();
+        Frame::attachTo(parent);
+        if (m_parent != parent) return; // a frame cycle: refused and reported by Frame
+        d.attachTo(pf ? &pf->m_body->getDynamics() : nullptr);
+        m_body->attach(this); // T re-expressed against the new parent, at the body's pose
+    }
     void suspend() const override {}
     void release() const override {}
     void Delete() const override {

@@ -274,8 +274,9 @@ void PhysicsScene::update(int now) {
 }
 
 void PhysicsScene::writeFrames(float alpha) {
+    const unsigned long long round = RigidBody::newFrameRound(); // parents' frames before their children's
     for (RigidBody* b : m_bodies)
-        if (!b->dying() && !b->pendingRemoval) b->writeFrame(alpha);
+        if (!b->dying() && !b->pendingRemoval) b->writeFrameAfterParent(alpha, round);
 }
 
 // --- the step ---

@@ -4,6 +4,7 @@
 #include "BodyValidation.h"
 #include "PhysicsScene.h"
 #include "iFrame.h"
+#include "iPhysicsFrame.h"
 #include "iUtilities.h"
 
 #include <algorithm>
@@ -172,6 +173,26 @@ void RigidBody::writeFrame(float alpha) {
     t.m43 = origin.z;
     m_frame->setWorldTransform(t);
     m_writtenT = m_frame->transform();
+}
+
+unsigned long long RigidBody::newFrameRound() {
+    static unsigned long long round = 0;
+    return ++round;
+}
+
+void RigidBody::writeFrameAfterParent(float alpha, unsigned long long round) {
+    if (m_frameRound == round) return;
+    m_frameRound = round;
+    if (!m_frame) return;
+    for (iFrame* a = m_frame->parent(); a; a = a->parent()) {
+        auto* pf = dynamic_cast<iPhysicsFrame*>(a);
+        RigidBody* p = pf ? dynamic_cast<RigidBody*>(pf->getRB()) : nullptr;
+        if (!p) continue;
+        if (p->m_scene == m_scene && !p->m_dying && !p->pendingRemoval)
+            p->writeFrameAfterParent(alpha, round);
+        break; // that body wrote its own ancestors first
+    }
+    writeFrame(alpha);
 }
 
 } // namespace physics
