@@ -6,7 +6,7 @@
 // the body out of the scene (the PhysicsFrame keeps working, unsimulated); Delete() on getRB() is refused.
 // The game deletes its PhysicsFrames, which deletes their bodies (safe inside update: deferred).
 // clone() makes a new frame (same T and parent) owning a copy of the body (dynamics, listeners) in the same
-// scene.
+// scene. attachTo(another PhysicsFrame) also attaches the bodies (one composite); any other parent detaches.
 #pragma once
 
 #include "Frame.h"
