@@ -24,7 +24,7 @@ public:
     RBDynamics* getDynamics() const override { return &m_body->getDynamics(); }
 
     // A new frame with the same T and parent, owning a copy of the body (dynamics, listeners, generators)
-    // in the same scene as this one's.
+    // in the same scene as this one's; attached to a PhysicsFrame, the copy's body joins that composite too.
     iPhysicsFrame* clone() const override {
         PhysicsFrame* copy = new PhysicsFrame();
         copy->m_T = m_T;
@@ -35,6 +35,16 @@ public:
             if (m_body->scene()) m_body->scene()->add(b);
         }
         b->getDynamics() = m_body->getDynamics();
+        const RBDynamics& src = m_body->getDynamics();
+        if (src.attachedTo()) { // a copy starts unattached: at the original's world pose and velocity...
+            RBDynamics& d = b->getDynamics();
+            d.position = src.getWorldPosition();
+            d.orientation = src.getWorldOrientation();
+            d.velocity = src.getVelocityAtWorldPoint(d.position);
+            d.angularVelocity = src.attachmentRoot()->angularVelocity;
+            if (auto* pf = dynamic_cast<PhysicsFrame*>(m_parent)) // ...then in the parent's composite
+                d.attachTo(&pf->m_body->getDynamics());
+        }
         b->getListeners() = m_body->getListeners();
         b->generators() = m_body->generators();
         b->snapshotValid();

@@ -133,3 +133,18 @@ TEST(PhysicsFrameAttachment, TorqueAndImpulseOnTheChildTurnTheComposite) {
     EXPECT_NEAR(a.y, c.y - 1.5f * std::sin(w * t), 1e-4f);
     EXPECT_NEAR(hit.a().angularVelocity.z, w, 1e-5f);
 }
+
+// A clone of an attached frame sits where the original is, in the same composite: 1 + 3 + 3 = 7 kg.
+TEST(PhysicsFrameAttachment, CloneOfAnAttachedFrameJoinsTheSameComposite) {
+    SceneHolder h(60);
+    Pair p{Vector(0, 10, 0)};
+    p.child->attachTo(p.root);
+    iPhysicsFrame* copy = p.child->clone();
+    EXPECT_EQ(copy->parent(), p.root);
+    EXPECT_EQ(copy->getDynamics()->attachedTo(), &p.a());
+    EXPECT_NEAR((copy->getDynamics()->getWorldPosition() - Vector(2, 10, 0)).length(), 0.0f, 1e-5f);
+    EXPECT_EQ(p.a().getCompositeMass(), 7.0f);
+    h.run(100);
+    EXPECT_NEAR((copy->position() - p.child->position()).length(), 0.0f, 1e-5f); // drawn together
+    copy->Delete();
+}
