@@ -104,7 +104,7 @@ public:
                                  : 2.0f * std::fmin(c.half.x, std::fmin(c.half.y, c.half.z)));
         return m;
     }
-    void start() { joinDefaultSpace(); }
+    void start() { joinDefaultSpace(L"CreateCCompound"); }
 
 private:
     std::vector<Child> m_children;

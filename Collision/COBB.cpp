@@ -44,7 +44,7 @@ public:
         out.push_back(s);
     }
     float minDimension() const override { return 2.0f * std::fmin(m_half.x, std::fmin(m_half.y, m_half.z)); }
-    void start() { joinDefaultSpace(); }
+    void start() { joinDefaultSpace(L"CreateCOBB"); }
 
 private:
     Vector m_half;

@@ -45,7 +45,7 @@ public:
     // A plane is never sampled on its own account; its size plays no part.
     float minDimension() const override { return std::numeric_limits<float>::infinity(); }
     bool isPlane() const override { return true; }
-    void start() { joinDefaultSpace(); }
+    void start() { joinDefaultSpace(L"CreateCPlane"); }
 
 private:
     Vector m_normal;

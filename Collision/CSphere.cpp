@@ -36,7 +36,7 @@ public:
         out.push_back(s);
     }
     float minDimension() const override { return 2.0f * m_radius; }
-    void start() { joinDefaultSpace(); }
+    void start() { joinDefaultSpace(L"CreateCSphere"); }
 
 private:
     float m_radius;

@@ -2,6 +2,9 @@
 #include "CollisionGeometry.h"
 #include "SimpleCollisionSpace.h"
 #include "iRigidBody.h"
+#include "iUtilities.h"
+
+#include <string>
 
 CollisionGeometry::CollisionGeometry() { watchRigidBodies(&CollisionGeometry::onBodyDestroyed, this); }
 
@@ -28,8 +31,15 @@ void CollisionGeometry::shapeChanged() {
     if (m_body) m_body->getDynamics().setShapeMass(this, shapeMass());
 }
 
-void CollisionGeometry::joinDefaultSpace() {
-    if (iCollisionSpace* s = getDefaultCollisionSpace()) s->add(asInterface());
+void CollisionGeometry::joinDefaultSpace(const wchar_t* factory) {
+    if (iCollisionSpace* s = getDefaultCollisionSpace()) {
+        s->add(asInterface());
+    } else if (factory) { // the seed's order is scene, space, geometry: a geometry in no space never collides
+        std::wstring msg = std::wstring(factory) +
+                           L": no default collision space is set, so this geometry collides with nothing; "
+                           L"set the space first (setNewGlobalCollisionSpace) or add it with space->add()";
+        error(msg.c_str());
+    }
 }
 
 bool CollisionGeometry::currentPose(Vector& origin, Matrix& rotation) const {

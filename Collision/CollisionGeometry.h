@@ -60,8 +60,9 @@ public:
 protected:
     CollisionGeometry();
     virtual ~CollisionGeometry();
-    // Joins the default space (called by the factories once the object is complete).
-    void joinDefaultSpace();
+    // Joins the default space (called by the factories once the object is complete). A factory passes its
+    // name: with no default space the new geometry joins none, and that is reported with error().
+    void joinDefaultSpace(const wchar_t* factory = nullptr);
     // Leaves the space (deferred if that space is busy notifying listeners) and deletes this.
     void destroy() const;
     // Tells the body the geometry's solid changed (a new radius, a child added).

@@ -1,8 +1,8 @@
 // RBDynamics.cpp - RBDynamics' functions: inertia, impulses, and attachment chains (composite bodies).
 //
 // Compiled once per package (both the simulator and the collision detector read RBDynamics). Composite
-// (attached) bodies: an attached body's world pose follows its parent chain, and impulses and getMass act on
-// the whole composite (see RBDynamics.h). Eigen is used in here only.
+// (attached) bodies: an attached body's world pose follows its parent chain, and impulses and
+// getCompositeMass act on the whole composite (see RBDynamics.h). Eigen is used in here only.
 #include "RBDynamics.h"
 
 #include "MathEigen.h"
@@ -306,7 +306,9 @@ Vector RBDynamics::getWorldOrigin() const {
     return getWorldPosition() - getWorldOrientation().direction(com);
 }
 
-float RBDynamics::getMass() const {
+float RBDynamics::getMass() const { return attachmentRoot()->mass; }
+
+float RBDynamics::getCompositeMass() const {
     // Sum over the tree rooted at the chain's root (iterative depth-first walk).
     const RBDynamics* root = attachmentRoot();
     float total = 0.0f;

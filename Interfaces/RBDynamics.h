@@ -148,8 +148,10 @@ struct RBDynamics {
     void attachTo(RBDynamics* p);
     RBDynamics* attachedTo() const;
     RBDynamics* attachmentRoot() const;
-    // Mass of the whole composite rooted at attachmentRoot() (INFINITE_MASS if any part is infinite).
+    // The seed: the mass of the body at the root of the attachment chain (its own mass when unattached).
     float getMass() const;
+    // Mass of the whole composite rooted at attachmentRoot() (INFINITE_MASS if any part is infinite).
+    float getCompositeMass() const;
     // Mass, centre of mass and inertia (world axes, about that centre) of the composite rooted at
     // attachmentRoot(), by the parallel-axis theorem. For an unattached body: its own mass, position and
     // world tensor. inverseInertia is zero when the mass is infinite (nothing can turn it).

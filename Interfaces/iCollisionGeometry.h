@@ -4,7 +4,8 @@
 // origin (getWorldOrigin(), i.e. the COM minus the com offset) and turns with getWorldOrientation().
 // Detection itself uses poses only (a space remembers each geometry's previous pose for continuous
 // sampling); velocities are for whoever resolves the contacts (getVelocityAtWorldPoint).
-// On creation it joins the default collision space (setDefaultCollisionSpace); Delete() leaves its space.
+// On creation it joins the default collision space (setDefaultCollisionSpace; with none set, error() says it
+// joins no space: add it with iCollisionSpace::add). Delete() leaves its space.
 // A geometry is in at most one space: adding it to a second space moves it there. A geometry bound to a body
 // that is destroyed (rigidBodyDestroyed) is unbound and stops colliding.
 #pragma once

@@ -5,8 +5,8 @@
 // The scene deletes bodies on shutdown but not physics frames' bodies: deleting the scene first only takes
 // the body out of the scene (the PhysicsFrame keeps working, unsimulated); Delete() on getRB() is refused.
 // The game deletes its PhysicsFrames, which deletes their bodies (safe inside update: deferred).
-// clone() makes a new root frame at the body's pose owning a copy of the body (dynamics, listeners) in the
-// same scene.
+// clone() makes a new frame at the body's pose owning a copy of the body (dynamics, listeners) in the same
+// scene. attachTo(another PhysicsFrame) also attaches the bodies (one composite); any other parent detaches.
 #pragma once
 
 #include "Frame.h"

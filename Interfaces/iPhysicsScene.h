@@ -11,7 +11,8 @@
 // integrates nothing; a `now` smaller than the last one integrates nothing and becomes the new time base (the
 // clock was reset). Between updates while suspended nothing is integrated; restore(now) resumes from `now`
 // with no jump. After stepping, each body's frame gets T interpolated between the previous and the current
-// step (alpha = leftover time / step): drawing is smooth and one step behind the simulation.
+// step (alpha = leftover time / step): drawing is smooth and one step behind the simulation. The first time
+// the dropped steps add up to a second of simulated time (stepRate steps), error() reports it, once.
 //
 // The interface is exactly the seed's, so a game's own stand-in scene implements only these. What the
 // simulator adds (knobs, game hooks, counters) lives on interfaces of its own that the scene made by
@@ -26,7 +27,8 @@ class iPhysicsScene {
 public:
     // initialization functions
     // Adds a body made by CreateRigidBody (or a PhysicsFrame's). nullptr, a body already in a scene and a
-    // foreign iRigidBody implementation are refused with error() and return false.
+    // foreign iRigidBody implementation are refused with error() and return false. A foreign body (a game's
+    // own iRigidBody) whose geometry is in this scene's space is an immovable obstacle: bodies bounce off it.
     virtual bool add(iRigidBody* o) = 0;
     // Sets the default collision space for geometries created from now on, and the space this scene
     // collides its bodies in.

@@ -49,7 +49,8 @@ protected:
     ~iRigidBody() = default;
 };
 
-// Creates a body bound to frame o (may be nullptr) and adds it to the active physics scene, if any.
+// Creates a body bound to frame o (may be nullptr) and adds it to the active physics scene; with no scene
+// yet, error() says the body is not simulated (add() it to a scene later).
 extern "C" iRigidBody* CreateRigidBody(iFrame* o);
 
 // --- body lifetime: where the simulator and the collision detector meet ---

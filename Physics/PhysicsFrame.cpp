@@ -7,6 +7,7 @@
 #include "PhysicsScene.h"
 #include "RigidBody.h"
 #include "iPhysicsFrame.h"
+#include "iUtilities.h"
 
 namespace physics {
 
@@ -22,8 +23,9 @@ public:
     iRigidBody* getRB() const override { return m_body; }
     RBDynamics* getDynamics() const override { return &m_body->getDynamics(); }
 
-    // A new root frame at the body's pose, owning a copy of the body (dynamics, listeners, generators) in
-    // the same scene as this one's. (A course framework's Frame does not expose its parent to copy.)
+    // A new frame at the body's pose, owning a copy of the body (dynamics, listeners, generators) in the same
+    // scene as this one's; an attached body's copy joins the same composite. (A course framework's Frame does
+    // not expose its parent, so the new frame is a root frame.)
     iPhysicsFrame* clone() const override {
         PhysicsFrame* copy = new PhysicsFrame();
         RigidBody* b = copy->m_body;
@@ -32,11 +34,38 @@ public:
             if (m_body->scene()) m_body->scene()->add(b);
         }
         b->getDynamics() = m_body->getDynamics();
+        const RBDynamics& src = m_body->getDynamics();
+        if (src.attachedTo()) { // a copy starts unattached: at the original's world pose and velocity...
+            RBDynamics& d = b->getDynamics();
+            d.position = src.getWorldPosition();
+            d.orientation = src.getWorldOrientation();
+            d.velocity = src.getVelocityAtWorldPoint(d.position);
+            d.angularVelocity = src.attachmentRoot()->angularVelocity;
+            d.attachTo(src.attachedTo()); // ...then in the same composite
+        }
         b->getListeners() = m_body->getListeners();
         b->generators() = m_body->generators();
         b->snapshotValid();
         b->attach(copy); // the frame takes the copied body's pose
         return copy;
+    }
+    // The seed: attaching a PhysicsFrame to another also attaches its body to that frame's body (one
+    // composite, RBDynamics::attachTo); attaching to a plain frame or to nullptr detaches the body. Refused
+    // with error(), changing nothing, when either the frames or the bodies would form a cycle.
+    void attachTo(iFrame* parent) override {
+        auto* pf = dynamic_cast<PhysicsFrame*>(parent);
+        RBDynamics& d = m_body->getDynamics();
+        for (const RBDynamics* a = pf ? &pf->m_body->getDynamics() : nullptr; a; a = a->attachedTo()) {
+            if (a == &d) {
+                error(L"PhysicsFrame::attachTo: the parent's body is attached to this one's; refused");
+                return;
+            }
+        }
+        m_body->adoptFrameEdits(); // moves the game made to either frame count before the bodies link
+        if (pf) pf->m_body->adoptFrameEdits();
+        Frame::attachTo(parent);
+        d.attachTo(pf ? &pf->m_body->getDynamics() : nullptr);
+        m_body->attach(this); // T re-expressed against the new parent, at the body's pose
     }
     void suspend() const override {}
     void release() const override {}
@@ -53,4 +82,9 @@ private:
 
 } // namespace physics
 
-extern "C" iPhysicsFrame* CreatePhysicsFrame() { return new physics::PhysicsFrame(); }
+extern "C" iPhysicsFrame* CreatePhysicsFrame() {
+    if (!physics::PhysicsScene::active()) // the seed's order is scene first: say so while it can be fixed
+        error(L"CreatePhysicsFrame: no physics scene exists yet, so its body is not simulated; add() getRB() "
+              L"to a scene once there is one");
+    return new physics::PhysicsFrame();
+}

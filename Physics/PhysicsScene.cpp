@@ -251,6 +251,11 @@ void PhysicsScene::update(int now) {
     if (m_accumulator >= 1000) { // the catch-up cap: drop the backlog, keep the partial step
         m_dropped += m_accumulator / 1000;
         m_accumulator %= 1000;
+        if (!m_reportedDrops && m_dropped >= m_stepRate) { // a second of simulated time lost: say so once
+            m_reportedDrops = true;
+            error(L"PhysicsScene::update: the catch-up cap (maxStepsPerUpdate) has dropped a second of "
+                  L"simulated time; the game runs slower than real time (reported once)");
+        }
     }
     if (m_deleteRequested) {
         delete this;
@@ -260,8 +265,9 @@ void PhysicsScene::update(int now) {
 }
 
 void PhysicsScene::writeFrames(float alpha) {
+    const unsigned long long round = RigidBody::newFrameRound(); // parents' frames before their children's
     for (RigidBody* b : m_bodies)
-        if (!b->dying() && !b->pendingRemoval) b->writeFrame(alpha);
+        if (!b->dying() && !b->pendingRemoval) b->writeFrameAfterParent(alpha, round);
 }
 
 // --- the step ---

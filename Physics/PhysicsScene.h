@@ -101,6 +101,8 @@ private:
     bool m_busy = false;
     mutable bool m_deleteRequested = false;
     long long m_steps = 0, m_dropped = 0;
+    // The dropped backlog reached stepRate steps (1 s) and was reported.
+    bool m_reportedDrops = false;
     Composite m_composite; // scratch, reused so that stepping allocates nothing
     ContactSolver m_solver;
     Islands m_islands;

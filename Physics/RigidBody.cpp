@@ -5,6 +5,7 @@
 #include "FrameDriver.h"
 #include "PhysicsScene.h"
 #include "iFrame.h"
+#include "iPhysicsFrame.h"
 #include "iUtilities.h"
 
 #include <algorithm>
@@ -162,10 +163,34 @@ void RigidBody::writeFrame(float alpha) {
     m_writtenWorld = m_frame->world();
 }
 
+unsigned long long RigidBody::newFrameRound() {
+    static unsigned long long round = 0;
+    return ++round;
+}
+
+void RigidBody::writeFrameAfterParent(float alpha, unsigned long long round) {
+    if (m_frameRound == round) return;
+    m_frameRound = round;
+    if (!m_frame) return;
+    for (iFrame* a = m_frame->parent(); a; a = a->parent()) {
+        auto* pf = dynamic_cast<iPhysicsFrame*>(a);
+        RigidBody* p = pf ? dynamic_cast<RigidBody*>(pf->getRB()) : nullptr;
+        if (!p) continue;
+        if (p->m_scene == m_scene && !p->m_dying && !p->pendingRemoval)
+            p->writeFrameAfterParent(alpha, round);
+        break; // that body wrote its own ancestors first
+    }
+    writeFrame(alpha);
+}
+
 } // namespace physics
 
 extern "C" iRigidBody* CreateRigidBody(iFrame* o) {
     physics::RigidBody* body = new physics::RigidBody(o);
-    if (physics::PhysicsScene* scene = physics::PhysicsScene::active()) scene->add(body);
+    if (physics::PhysicsScene* scene = physics::PhysicsScene::active())
+        scene->add(body);
+    else // the seed's order is scene first: say so now, not when the body silently never moves
+        error(L"CreateRigidBody: no physics scene exists yet, so this body is not simulated; add() it to a "
+              L"scene once there is one");
     return body;
 }

@@ -63,6 +63,10 @@ public:
     void recordPreviousPose();
     void recordStepPose(); // the pose a step ended with (an edit after it is a teleport)
     void writeFrame(float alpha);
+    // writeFrame once per round, after the nearest ancestor frame that is another body's frame in the same
+    // scene (a frame's T is relative to its parent, so the parent must be where it is drawn now).
+    void writeFrameAfterParent(float alpha, unsigned long long round);
+    static unsigned long long newFrameRound();
     bool pendingRemoval = false; // remove() during a step: skipped now, removed when the step ends
     // The world pose (COM, rotation) at the start of the current step.
     const Vector& previousPosition() const { return m_prevPosition; }
@@ -103,6 +107,7 @@ private:
     PhysicsScene* m_scene = nullptr;
     iPhysicsFrame* m_owner = nullptr;
     bool m_dying = false;
+    unsigned long long m_frameRound = 0;
     Vector m_prevPosition, m_stepPosition;
     Quat m_prevRotation = Quat::Identity();
     Matrix m_stepOrientation = Matrix(1);

@@ -2,6 +2,7 @@
 // sphere-sphere figure is the baseline the others are compared with) and populateContactList for 1,000 and
 // 5,000 bodies in the simple space, sparse (few contacts) and dense (several contacts per body), at rest and
 // moving (continuous sampling at work).
+#include "DefaultSpace.h"
 #include "MathEigen.h"
 #include "Narrowphase.h"
 #include "UserBody.h"
@@ -81,6 +82,7 @@ void BM_SimpleSpacePopulate(benchmark::State& state) {
     // so that each touches a few others.
     const float side = std::cbrt(float(n)) * (dense ? 0.9f : 4.0f);
     iCollisionSpace* space = CreateSimpleCollisionSpace(60);
+    DefaultSpace joins(space); // new geometry joins it
     std::vector<std::unique_ptr<UserBody>> bodies;
     std::vector<iCollisionGeometry*> geoms;
     for (int i = 0; i < n; ++i) {

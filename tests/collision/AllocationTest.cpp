@@ -1,6 +1,7 @@
 // AllocationTest.cpp - after warm-up, populateContactList does not allocate: the contact list, the working
 // arrays and the listener snapshot keep their storage between calls. Counted by replacing the global
 // operator new in this test program.
+#include "DefaultSpace.h"
 #include "UserBody.h"
 #include "iCOBB.h"
 #include "iCSphere.h"
@@ -48,6 +49,7 @@ struct Counter final : iCollisionListener {
 
 TEST(Allocation, PopulateDoesNotAllocateAfterWarmUp) {
     iCollisionSpace* space = CreateSimpleCollisionSpace(60);
+    DefaultSpace joins(space); // new geometry joins it
     std::vector<std::unique_ptr<UserBody>> bodies;
     std::vector<iCollisionGeometry*> geoms;
     Counter counter;

@@ -1,6 +1,7 @@
 // ContinuousTest.cpp - the tunnelling probes: a 0.1 m sphere (and a 0.2 m box) at 10, 100 and 1000 m/s
 // against a 1 m box and a plane, at several sample rates, within one populateContactList call. With
 // sampling on nothing passes through; with delta = 0 or infinity (discrete) a fast body does.
+#include "DefaultSpace.h"
 #include "UserBody.h"
 #include "iCOBB.h"
 #include "iCPlane.h"
@@ -20,6 +21,7 @@ const float kDt = 1.0f / 60.0f;
 size_t probe(bool sphere, size_t samplesPerSecond, const Vector& from, const Vector& to, float delta,
              CollisionContact* first = nullptr, bool moveTheBox = false) {
     iCollisionSpace* space = CreateSimpleCollisionSpace(samplesPerSecond);
+    DefaultSpace joins(space); // new geometry joins it
     UserBody wall(Vector(), moveTheBox ? PHYS_Falling : PHYS_FixedInSpace), mover(from);
     iCollisionGeometry* m =
         sphere ? CreateCSphere(&mover, 0.05f) : CreateCOBB(&mover, Vector(0.1f, 0.1f, 0.1f));
@@ -89,6 +91,7 @@ TEST(Continuous, NothingPassesThroughAPlane) {
     for (float speed : {10.0f, 100.0f, 1000.0f})
         for (float delta : {0.0f, kDt}) {
             iCollisionSpace* space = CreateSimpleCollisionSpace(60);
+            DefaultSpace joins(space); // new geometry joins it
             UserBody s(Vector(0, 0.06f, 0)), b(Vector(2, 0.11f, 0));
             iCollisionGeometry* floor = CreateCPlane(nullptr, Vector(0, 1, 0), 0.0f);
             iCollisionGeometry* gs = CreateCSphere(&s, 0.05f);
@@ -115,6 +118,7 @@ TEST(Continuous, NothingPassesThroughAPlane) {
 
 TEST(Continuous, SphereAgainstFastSphere) {
     iCollisionSpace* space = CreateSimpleCollisionSpace(60);
+    DefaultSpace joins(space); // new geometry joins it
     UserBody a(Vector(-5, 0, 0)), b(Vector(0, 0, 0));
     iCollisionGeometry* ga = CreateCSphere(&a, 0.05f);
     iCollisionGeometry* gb = CreateCSphere(&b, 0.05f);
@@ -134,6 +138,7 @@ TEST(Continuous, ASpinningPlankIsSampledThroughItsTurn) {
     // A 2 m plank, 4 cm thick, turns 90 degrees about z in one step. A small fixed box at 45 degrees is clear
     // of it at both ends of the step and inside its path halfway: slerp sampling finds it.
     iCollisionSpace* space = CreateSimpleCollisionSpace(60);
+    DefaultSpace joins(space); // new geometry joins it
     UserBody plank(Vector(0, 0, 0)), post(Vector(0.42f, 0.42f, 0), PHYS_FixedInSpace);
     iCollisionGeometry* gp = CreateCOBB(&plank, Vector(1, 0.02f, 0.2f));
     iCollisionGeometry* gb = CreateCOBB(&post, Vector(0.1f, 0.1f, 0.1f));

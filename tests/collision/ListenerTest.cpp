@@ -1,6 +1,7 @@
 // ListenerTest.cpp - HitWall: once per touching body pair per populate call, on both sides, normal toward
 // `other`; and the safety rules: listeners that detach themselves, delete or remove geometry, or delete
 // bodies during the call.
+#include "DefaultSpace.h"
 #include "UserBody.h"
 #include "iCOBB.h"
 #include "iCPlane.h"
@@ -35,6 +36,7 @@ public:
 
 TEST(Listeners, OncePerBodyPairOnBothSidesWithNormalTowardOther) {
     iCollisionSpace* space = CreateSimpleCollisionSpace();
+    DefaultSpace joins(space); // new geometry joins it
     UserBody a(Vector(0, 0, 0)), b(Vector(1.5f, 0, 0)), far(Vector(50, 0, 0));
     Recorder ra, rb, rfar;
     a.attachListener(&ra);
@@ -62,6 +64,7 @@ TEST(Listeners, OncePerBodyPairOnBothSidesWithNormalTowardOther) {
 
 TEST(Listeners, SelfDetachAndDetachingOthersIsSafe) {
     iCollisionSpace* space = CreateSimpleCollisionSpace();
+    DefaultSpace joins(space); // new geometry joins it
     UserBody a(Vector(0, 0, 0)), b(Vector(0.5f, 0, 0));
     Recorder first, second, third;
     first.onHit = [&](Recorder* self, iRigidBody*) {
@@ -89,6 +92,7 @@ TEST(Listeners, SelfDetachAndDetachingOthersIsSafe) {
 
 TEST(Listeners, DeletingOrRemovingGeometryDuringTheCallIsDeferred) {
     iCollisionSpace* space = CreateSimpleCollisionSpace();
+    DefaultSpace joins(space); // new geometry joins it
     UserBody a(Vector(0, 0, 0)), b(Vector(0.5f, 0, 0)), c(Vector(-0.5f, 0, 0));
     iCollisionGeometry* ga = CreateCSphere(&a, 1);
     iCollisionGeometry* gb = CreateCSphere(&b, 1);
@@ -124,6 +128,7 @@ TEST(Listeners, DeletingOrRemovingGeometryDuringTheCallIsDeferred) {
 
 TEST(Listeners, DeletingABodyDuringTheCallStopsItsCalls) {
     iCollisionSpace* space = CreateSimpleCollisionSpace();
+    DefaultSpace joins(space); // new geometry joins it
     auto* victim = new UserBody(Vector(0.5f, 0, 0));
     UserBody a(Vector(0, 0, 0));
     iCollisionGeometry* ga = CreateCSphere(&a, 1);
@@ -148,6 +153,7 @@ TEST(Listeners, DeletingABodyDuringTheCallStopsItsCalls) {
 
 TEST(Listeners, ABodilessPlaneIsReportedAsNullOther) {
     iCollisionSpace* space = CreateSimpleCollisionSpace();
+    DefaultSpace joins(space); // new geometry joins it
     UserBody a(Vector(0, 0.2f, 0));
     Recorder ra;
     a.attachListener(&ra);

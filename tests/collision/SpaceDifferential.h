@@ -4,6 +4,7 @@
 // overlapping pair, none twice, none false. Reusable: pass any space factory.
 #pragma once
 
+#include "DefaultSpace.h"
 #include "MathEigen.h"
 #include "Narrowphase.h"
 #include "UserBody.h"
@@ -72,6 +73,7 @@ inline void checkAgainstBruteForce(const std::function<iCollisionSpace*()>& make
     auto uni = [&](float a, float b) { return std::uniform_real_distribution<float>(a, b)(gen); };
     auto pick = [&](int n) { return std::uniform_int_distribution<int>(0, n - 1)(gen); };
     iCollisionSpace* space = makeSpace();
+    DefaultSpace joins(space); // new geometry joins it
     std::vector<std::unique_ptr<UserBody>> bodies;
     std::vector<iCollisionGeometry*> geoms;
     const float extent = scene == Scene::Sparse ? 60.0f : scene == Scene::Dense ? 6.0f : 20.0f;

@@ -37,8 +37,12 @@ TEST(Attachment, CompositeMassAndLinks) {
     RBDynamics& b = d.b->getDynamics();
     EXPECT_EQ(b.attachedTo(), &a);
     EXPECT_EQ(b.attachmentRoot(), &a);
-    EXPECT_EQ(a.getMass(), 4.0f);
-    EXPECT_EQ(b.getMass(), 4.0f);
+    // The seed: getMass() is the mass of the body at the root of the chain (A, 1 kg), from any part;
+    // getCompositeMass() is the whole composite's, 1 + 3 = 4 kg.
+    EXPECT_EQ(a.getMass(), 1.0f);
+    EXPECT_EQ(b.getMass(), 1.0f);
+    EXPECT_EQ(a.getCompositeMass(), 4.0f);
+    EXPECT_EQ(b.getCompositeMass(), 4.0f);
     EXPECT_EQ(b.position, Vector(2, 0, 0)); // relative to A, which sits at the origin unrotated
     RBDynamics::MassProperties mp = b.getCompositeMassProperties();
     EXPECT_NEAR(mp.centre.x, 1.5f, 1e-6f);
@@ -131,7 +135,9 @@ TEST(Attachment, CompositeFallsAsOneAndDetachesSeamlessly) {
     EXPECT_EQ(b.attachedTo(), nullptr);
     EXPECT_NEAR((b.position - wb).length(), 0.0f, 1e-6f);
     EXPECT_NEAR((b.velocity - vBefore).length(), 0.0f, 1e-6f);
-    EXPECT_EQ(a.getMass(), 1.0f);
+    EXPECT_EQ(a.getCompositeMass(), 1.0f);
+    // B is a root again: getMass() is its own mass.
+    EXPECT_EQ(b.getMass(), 3.0f);
     h.run(100); // both fall on, separately
     EXPECT_NEAR(b.velocity.y, a.velocity.y, 1e-5f);
 }
