@@ -23,9 +23,11 @@ endforeach()
 list(JOIN files "\n" manifest)
 file(WRITE "${dest}/MANIFEST.txt" "${manifest}\n")
 file(COPY "${ROOT}/packages/${NAME}/INTEGRATION.md" DESTINATION "${dest}")
-# example/: INTEGRATION.md's program, built from this package alone (plus Eigen).
+# example/: INTEGRATION.md's program (packages/<name>/example/main.cpp) with the one build file every
+# package's example shares, built from this package alone (plus Eigen).
 if(EXISTS "${ROOT}/packages/${NAME}/example")
   file(COPY "${ROOT}/packages/${NAME}/example" DESTINATION "${dest}")
+  configure_file("${ROOT}/packages/example-CMakeLists.txt" "${dest}/example/CMakeLists.txt" COPYONLY)
 endif()
 execute_process(COMMAND ${CMAKE_COMMAND} -E tar czf "${OUT}/${NAME}.tar.gz" "${NAME}"
   WORKING_DIRECTORY "${OUT}" RESULT_VARIABLE rc)
