@@ -26,8 +26,8 @@ endforeach()
 
 # Step 2 (Overwrite): the two math headers replace the host's own.
 set(overwritten MathDeclarations.h MathDefinitions.h)
-foreach(f ${overwritten})
-  file(COPY "${package}/Interfaces/${f}" DESTINATION "${host}")
+foreach(f ${overwritten}) # not file(COPY): it skips a destination with the same timestamp (a fresh clone)
+  configure_file("${package}/Interfaces/${f}" "${host}/${f}" COPYONLY)
 endforeach()
 
 # Step 3 (Merge): every row of the merge table adds one line after its anchor line.
