@@ -17,7 +17,10 @@
 // can overwrite its own copy with this one and keep compiling. Plain C++: no Eigen here or in
 // MathDefinitions.h; the few heavy operations (inverse, orthoNormalize, inertia) live in GuardianMath.cpp.
 // Supported: MODEL_Z_AXIS == NEAR_TO_FAR (the framework's default); see MathDefinitions.h.
-#pragma once
+// The framework's own include guard, not #pragma once: a project may hold this file twice (its copy and
+// the package's Interfaces/ copy), and the guard keeps the two from both expanding.
+#ifndef _MATH_DECLARATIONS_H_
+#define _MATH_DECLARATIONS_H_
 
 #include <cmath>
 #include <cstddef>
@@ -236,3 +239,5 @@ struct Reflectivity {
 
 // The definitions come with the declarations so that no translation unit can use one without the other.
 #include "MathDefinitions.h"
+
+#endif // _MATH_DECLARATIONS_H_

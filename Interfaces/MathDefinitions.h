@@ -5,7 +5,10 @@
 // nearest rotation, inertia of point sets) are declared in MathDeclarations.h and defined once, with Eigen
 // inside, in GuardianMath.cpp. See MathDeclarations.h for the conventions (row vectors, translation in
 // m41..m43, left-handed, y up).
-#pragma once
+// The framework's own include guard, not #pragma once: a project may hold this file twice (its copy and
+// the package's Interfaces/ copy), and the guard keeps the two from both expanding.
+#ifndef _MATH_DEFINITIONS_H_
+#define _MATH_DEFINITIONS_H_
 
 #include "MathDeclarations.h"
 
@@ -182,3 +185,5 @@ inline Matrix getBoxInertiaTensor(float mass, const Vector& h) {
 inline Matrix getSphereInertiaTensor(float mass, float radius) {
     return Matrix(0.4f * mass * radius * radius);
 }
+
+#endif // _MATH_DEFINITIONS_H_
