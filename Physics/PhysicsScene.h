@@ -70,6 +70,11 @@ public:
     bool busy() const { return m_busy; } // inside update(): removals and deletions are deferred
     void deferDelete(RigidBody* b) { m_deferredDeletes.push_back(b); }
     void forget(RigidBody* b); // b is being destroyed now: drop every reference to it
+    // The body of this scene whose dynamics d is, or nullptr.
+    RigidBody* bodyOf(const RBDynamics* d) const {
+        auto it = m_byDynamics.find(d);
+        return it == m_byDynamics.end() ? nullptr : it->second;
+    }
 
 private:
     ~PhysicsScene();

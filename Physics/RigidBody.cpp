@@ -5,7 +5,6 @@
 #include "FrameDriver.h"
 #include "PhysicsScene.h"
 #include "iFrame.h"
-#include "iPhysicsFrame.h"
 #include "iUtilities.h"
 
 #include <algorithm>
@@ -172,12 +171,12 @@ void RigidBody::writeFrameAfterParent(float alpha, unsigned long long round) {
     if (m_frameRound == round) return;
     m_frameRound = round;
     if (!m_frame) return;
-    for (iFrame* a = m_frame->parent(); a; a = a->parent()) {
-        auto* pf = dynamic_cast<iPhysicsFrame*>(a);
-        RigidBody* p = pf ? dynamic_cast<RigidBody*>(pf->getRB()) : nullptr;
-        if (!p) continue;
-        if (p->m_scene == m_scene && !p->m_dying && !p->pendingRemoval)
-            p->writeFrameAfterParent(alpha, round);
+    // Frames attached to each other through PhysicsFrame::attachTo have attached bodies too, so the body
+    // chain gives the frame order; a course framework's iFrame does not tell its parent.
+    for (const RBDynamics* a = m_dyn.attachedTo(); a && m_scene; a = a->attachedTo()) {
+        RigidBody* p = m_scene->bodyOf(a);
+        if (!p || !p->m_frame) continue;
+        if (!p->m_dying && !p->pendingRemoval) p->writeFrameAfterParent(alpha, round);
         break; // that body wrote its own ancestors first
     }
     writeFrame(alpha);

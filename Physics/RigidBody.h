@@ -63,8 +63,9 @@ public:
     void recordPreviousPose();
     void recordStepPose(); // the pose a step ended with (an edit after it is a teleport)
     void writeFrame(float alpha);
-    // writeFrame once per round, after the nearest ancestor frame that is another body's frame in the same
-    // scene (a frame's T is relative to its parent, so the parent must be where it is drawn now).
+    // writeFrame once per round, after the frame of the nearest ancestor body (in the attachment chain) that
+    // has one in the same scene (a frame's T is relative to its parent, so the parent must be where it is
+    // drawn now).
     void writeFrameAfterParent(float alpha, unsigned long long round);
     static unsigned long long newFrameRound();
     bool pendingRemoval = false; // remove() during a step: skipped now, removed when the step ends
