@@ -26,7 +26,7 @@ public:
 
 protected:
     // Not deleted through the interface: call Delete() (it deletes the body too).
-    ~iPhysicsFrame() override = default;
+    ~iPhysicsFrame() = default;
 };
 
 extern "C" iPhysicsFrame* CreatePhysicsFrame();
