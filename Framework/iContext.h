@@ -8,18 +8,18 @@
 
 #include "MathDeclarations.h"
 
-enum Integer {
+enum Integer : int {
     GF_FRAMES,   // headless runs: frames to run
     GF_FRAME_MS, // headless runs: milliseconds a frame
     GF_NO_INTEGERS
 };
 
-enum Float {
+enum Float : int {
     GF_FRAME_SECONDS, // headless runs: seconds a frame (informational)
     GF_NO_FLOATS
 };
 
-enum VectorId {
+enum VectorId : int {
     GF_GRAVITY, // the game's idea of gravity (m/s^2), for designs that read it; the physics scene's gravity
                 // is set with settingsOf(scene)->setGravity
     GF_NO_VECTORS

@@ -27,10 +27,10 @@
 #include <cstddef>
 #include <vector>
 
-enum PhysicsType {
-    PHYS_Falling,      // moves under forces and gravity (the default)
-    PHYS_Floating,     // moves under forces, feels no gravity
-    PHYS_FixedInSpace, // never moves; collisions between two fixed bodies are never tested
+enum PhysicsType : int { // a fixed type: any int is a value, so a bad one is refused, not undefined
+    PHYS_Falling,        // moves under forces and gravity (the default)
+    PHYS_Floating,       // moves under forces, feels no gravity
+    PHYS_FixedInSpace,   // never moves; collisions between two fixed bodies are never tested
 };
 
 // True when the 3x3 block of i is finite, symmetric and positive definite: a valid inertia tensor (or

@@ -15,7 +15,7 @@
 class iRigidBody;
 class iCollisionSpace;
 
-enum CollisionType {
+enum CollisionType : int {
     CT_SPHERE = 1,
     CT_OBB = 2,
     CT_PLANE = 3,    // iCPlane: one-sided, infinite, static

@@ -4,7 +4,7 @@
 // the sum of the two values; restitution defaults to the larger of the two.
 #pragma once
 
-enum CombineRule {
+enum CombineRule : int {   // a fixed type: any int is a value, so a bad one is refused, not undefined
     COMBINE_Sum,           // a + b (the seed's friction rule; the default for friction)
     COMBINE_Average,       // (a + b) / 2
     COMBINE_Max,           // the larger (the default for restitution: a superball bounces off anything)

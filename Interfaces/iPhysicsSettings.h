@@ -3,7 +3,7 @@
 // Set with iPhysicsScene::setIntegrator or the context key GF_PHYS_INTEGRATOR (0 = the default).
 #pragma once
 
-enum Integrator {
+enum Integrator : int {           // a fixed type: any int is a value, so a bad one is refused, not undefined
     INTEGRATOR_Default = 0,       // = INTEGRATOR_SemiImplicitEuler
     INTEGRATOR_SemiImplicitEuler, // v += a dt, then x += v dt: symplectic, one force evaluation (default)
     INTEGRATOR_ExplicitEuler,     // x += v dt with the old v: first order, gains energy; for comparison only
