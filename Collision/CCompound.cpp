@@ -8,6 +8,12 @@
 
 namespace {
 
+// Every component within MAX_SHAPE_SIZE of the geometry's centre (NaN fails).
+bool validOffset(const Vector& o) {
+    auto ok = [](float f) { return std::fabs(f) <= MAX_SHAPE_SIZE; };
+    return ok(o.x) && ok(o.y) && ok(o.z);
+}
+
 struct Child {
     gcol::ShapeKind kind;
     Vector offset;
@@ -34,8 +40,10 @@ public:
         return r;
     }
     bool addSphere(const Vector& offset, float radius) override {
-        if (!offset.isFinite() || !(std::isfinite(radius) && radius > 0.0f)) {
-            error(L"iCCompound::addSphere: offset must be finite and radius finite and positive; refused");
+        if (!validOffset(offset) || !(radius > 0.0f && radius <= MAX_SHAPE_SIZE)) {
+            error(L"iCCompound::addSphere: offset and radius must be at most MAX_SHAPE_SIZE (1e6 m), the "
+                  L"radius "
+                  L"positive; refused");
             return false;
         }
         Child c;
@@ -47,10 +55,10 @@ public:
         return true;
     }
     bool addBox(const Vector& offset, const Matrix& rotation, const Vector& h) override {
-        if (!offset.isFinite() || !isRotation(rotation) || !h.isFinite() ||
-            !(h.x > 0 && h.y > 0 && h.z > 0)) {
-            error(L"iCCompound::addBox: needs a finite offset, a proper rotation and positive half extents; "
-                  L"refused");
+        auto ok = [](float f) { return f > 0.0f && f <= MAX_SHAPE_SIZE; };
+        if (!validOffset(offset) || !isRotation(rotation) || !ok(h.x) || !ok(h.y) || !ok(h.z)) {
+            error(L"iCCompound::addBox: needs an offset within MAX_SHAPE_SIZE (1e6 m), a proper rotation and "
+                  L"positive half extents at most MAX_SHAPE_SIZE; refused");
             return false;
         }
         Child c;

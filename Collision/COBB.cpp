@@ -8,7 +8,11 @@
 
 namespace {
 
-bool validExtents(const Vector& h) { return h.isFinite() && h.x > 0.0f && h.y > 0.0f && h.z > 0.0f; }
+// Positive and at most MAX_SHAPE_SIZE (PhysicsConstants.h): NaN fails every comparison.
+bool validExtents(const Vector& h) {
+    auto ok = [](float f) { return f > 0.0f && f <= MAX_SHAPE_SIZE; };
+    return ok(h.x) && ok(h.y) && ok(h.z);
+}
 
 class COBB final : public GeometryImpl<iCOBB> {
 public:
@@ -24,7 +28,8 @@ public:
     Vector getRadius() const override { return m_half; }
     void setRadius(const Vector& h) override {
         if (!validExtents(h)) {
-            error(L"iCOBB::setRadius: half extents must be finite and positive; refused");
+            error(L"iCOBB::setRadius: half extents must be positive and at most MAX_SHAPE_SIZE (1e6 m); "
+                  L"refused");
             return;
         }
         m_half = h;
@@ -54,7 +59,8 @@ private:
 
 iCollisionGeometry* CreateCOBB(iRigidBody* rb, const Vector& radius) {
     if (!validExtents(radius)) {
-        error(L"CreateCOBB: half extents must be finite and positive; no geometry created");
+        error(L"CreateCOBB: half extents must be positive and at most MAX_SHAPE_SIZE (1e6 m); no geometry "
+              L"created");
         return nullptr;
     }
     auto* b = new COBB(radius);

@@ -9,13 +9,24 @@
 
 namespace {
 
+float largestComponent(const Vector& n) {
+    return std::fmax(std::fabs(n.x), std::fmax(std::fabs(n.y), std::fabs(n.z)));
+}
+
 bool validPlane(const Vector& n, float offset) {
-    return n.isFinite() && n.lengthSquared() > 0.0f && std::isfinite(offset);
+    return n.isFinite() && largestComponent(n) > 0.0f && std::isfinite(offset);
+}
+
+// Scaled by its largest component first, so that neither (0, 1e20, 0) (length squared overflows) nor
+// (0, 1e-30, 0) (underflows) loses its direction: both become (0, 1, 0).
+Vector unitNormal(const Vector& n) {
+    const float m = largestComponent(n); // divided, not multiplied by 1 / m: a denormal m has no reciprocal
+    return Vector(n.x / m, n.y / m, n.z / m).normalize();
 }
 
 class CPlane final : public GeometryImpl<iCPlane> {
 public:
-    CPlane(const Vector& n, float offset) : m_normal(n.normalize()), m_offset(offset) {}
+    CPlane(const Vector& n, float offset) : m_normal(unitNormal(n)), m_offset(offset) {}
     iCollisionGeometry* clone() const override {
         auto* c = new CPlane(m_normal, m_offset);
         c->bind(const_cast<CPlane*>(this)->body());
@@ -31,7 +42,7 @@ public:
             error(L"iCPlane::setPlane: normal must be non-zero and finite, offset finite; refused");
             return;
         }
-        m_normal = n.normalize();
+        m_normal = unitNormal(n);
         m_offset = offset;
     }
     void worldShapes(const Vector& origin, const Matrix& r,

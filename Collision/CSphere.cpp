@@ -7,6 +7,8 @@
 
 namespace {
 
+bool validRadius(float r) { return r > 0.0f && r <= MAX_SHAPE_SIZE; } // NaN fails both
+
 class CSphere final : public GeometryImpl<iCSphere> {
 public:
     explicit CSphere(float radius) : m_radius(radius) {}
@@ -20,8 +22,9 @@ public:
     float getBoundingRadius() const override { return m_radius; }
     float getRadius() const override { return m_radius; }
     void setRadius(float radius) override {
-        if (!(std::isfinite(radius) && radius > 0.0f)) {
-            error(L"iCSphere::setRadius: radius must be finite and positive; refused");
+        if (!validRadius(radius)) {
+            error(
+                L"iCSphere::setRadius: radius must be positive and at most MAX_SHAPE_SIZE (1e6 m); refused");
             return;
         }
         m_radius = radius;
@@ -45,8 +48,9 @@ private:
 } // namespace
 
 iCollisionGeometry* CreateCSphere(iRigidBody* rb, float radius) {
-    if (!(std::isfinite(radius) && radius > 0.0f)) {
-        error(L"CreateCSphere: radius must be finite and positive; no geometry created");
+    if (!validRadius(radius)) {
+        error(L"CreateCSphere: radius must be positive and at most MAX_SHAPE_SIZE (1e6 m); no geometry "
+              L"created");
         return nullptr;
     }
     auto* s = new CSphere(radius);

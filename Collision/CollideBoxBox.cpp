@@ -72,7 +72,8 @@ int collideBoxBox(const BoxShape& a, const BoxShape& b, ContactManifold& out) {
     // distance).
     auto consider = [&](float ra, float rb, float dist, float len, int idx) -> bool {
         float overlap = (ra + rb - std::fabs(dist)) / len;
-        if (overlap < 0.0f) return false;
+        // Separated, or a NaN from an overflowed pose or size (inf - inf): no contact either way.
+        if (!(overlap >= 0.0f)) return false;
         // Face axes win ties (a stable manifold); an edge axis must be clearly shallower: by 2 % and 0.1 mm.
         // Between nearly parallel faces an edge axis is often a hair shallower, and taking it reported one
         // point instead of the overlap area (800 of 2000 resting dominoes in the narrowphase test). The
@@ -109,6 +110,9 @@ int collideBoxBox(const BoxShape& a, const BoxShape& b, ContactManifold& out) {
             if (!consider(ra, rb, dist, std::sqrt(len2), 6 + i * 3 + j)) return 0;
         }
     }
+    // Every overlap infinite (sizes or distances beyond the float range): no axis to report a finite contact
+    // along, and bestIdx would index the axes at -1.
+    if (bestIdx < 0) return 0;
     Vector bestAxis = bestIdx < 3   ? a.axis[bestIdx]
                       : bestIdx < 6 ? b.axis[bestIdx - 3]
                                     : cross(a.axis[(bestIdx - 6) / 3], b.axis[(bestIdx - 6) % 3]).normalize();

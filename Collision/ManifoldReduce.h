@@ -17,7 +17,9 @@ inline void reduceManifold(const ContactPoint* in, int n, const Vector& normal, 
     int i0 = 0;
     for (int i = 1; i < n; ++i)
         if (in[i].depth > in[i0].depth) i0 = i;
-    int i1 = -1;
+    // Starts on a real index: with a NaN (or overflowed) position no distance compares greater, and an
+    // index of -1 would read before the array.
+    int i1 = i0 == 0 ? 1 : 0;
     float best = -1.0f;
     for (int i = 0; i < n; ++i) {
         float d = (in[i].pos - in[i0].pos).lengthSquared();

@@ -61,32 +61,57 @@ Vector RBDynamics::getVelocityAtWorldPoint(const Vector& p) const {
 }
 
 bool isValidInertiaTensor(const Matrix& i) {
-    gmath::Mat3 t = gmath::block3(i);
+    // In double: entries near the float limit square and subtract without overflowing here.
+    Eigen::Matrix3d t = gmath::block3(i).cast<double>();
     if (!t.allFinite()) return false;
-    if ((t - t.transpose()).cwiseAbs().maxCoeff() > 1e-4f * (1.0f + t.cwiseAbs().maxCoeff())) return false;
-    Eigen::SelfAdjointEigenSolver<gmath::Mat3> eig(t);
-    return eig.eigenvalues().minCoeff() > 0.0f;
+    if ((t - t.transpose()).cwiseAbs().maxCoeff() > 1e-4 * (1.0 + t.cwiseAbs().maxCoeff())) return false;
+    Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(t);
+    return eig.eigenvalues().minCoeff() > 0.0;
 }
 
+bool isRotationLock(const Matrix& inverse) { return gmath::block3(inverse).isZero(0.0f); }
+
+namespace {
+// The inverse of a valid tensor, inverted in double (a float 3x3 inverse overflows its determinant from
+// entries of about 1e13 on: a 1 km rock's 2.5e17 came out as zero). False when the inverse does not fit a
+// float as a valid tensor (entries beyond the float range, or so small they flush to zero).
+bool invertTensor(const Matrix& i, Matrix& inverse) {
+    if (!isValidInertiaTensor(i)) return false;
+    Eigen::Matrix3d inv = gmath::block3(i).cast<double>().inverse();
+    Matrix out = gmath::fromBlock3(inv.cast<float>());
+    if (!isValidInertiaTensor(out)) return false;
+    inverse = out;
+    return true;
+}
+} // namespace
+
 void RBDynamics::setInertiaTensor(const Matrix& i) {
-    if (!isValidInertiaTensor(i)) {
-        error(
-            L"RBDynamics::setInertiaTensor: tensor is not finite, symmetric and positive definite; refused");
+    Matrix inverse;
+    if (!invertTensor(i, inverse)) {
+        error(L"RBDynamics::setInertiaTensor: tensor is not finite, symmetric and positive definite (with an "
+              L"inverse that is too, in float); refused");
         return;
     }
     m_inertia = gmath::fromBlock3(gmath::block3(i));
-    m_inverseInertia = gmath::fromBlock3(gmath::block3(i).inverse());
+    m_inverseInertia = inverse;
     m_inertiaFromGame = true;
 }
 
 void RBDynamics::setInverseInertiaTensor(const Matrix& i) {
-    if (!isValidInertiaTensor(i)) {
-        error(L"RBDynamics::setInverseInertiaTensor: tensor is not finite, symmetric and positive definite; "
-              L"refused");
+    if (isRotationLock(i)) { // zero: infinite inertia, the body never turns (the tensor reads zero)
+        m_inverseInertia = Matrix(0);
+        m_inertia = Matrix(0);
+        m_inertiaFromGame = true;
+        return;
+    }
+    Matrix inertia;
+    if (!invertTensor(i, inertia)) {
+        error(L"RBDynamics::setInverseInertiaTensor: tensor is not zero, or finite, symmetric and positive "
+              L"definite (with an inverse that is too, in float); refused");
         return;
     }
     m_inverseInertia = gmath::fromBlock3(gmath::block3(i));
-    m_inertia = gmath::fromBlock3(gmath::block3(i).inverse());
+    m_inertia = inertia;
     m_inertiaFromGame = true;
 }
 
@@ -250,7 +275,7 @@ RBDynamics::MassProperties RBDynamics::getCompositeMassProperties() const {
     const RBDynamics* root = attachmentRoot();
     MassProperties out{0.0f, Vector(), Matrix(1), Matrix()};
     double m = 0, cx = 0, cy = 0, cz = 0;
-    bool infinite = false;
+    bool infinite = false, locked = false;
     auto next = [root](const RBDynamics* n) -> const RBDynamics* {
         if (n->m_firstChild) return n->m_firstChild;
         while (n && n != root && !n->m_nextSibling) n = n->m_parent;
@@ -258,6 +283,7 @@ RBDynamics::MassProperties RBDynamics::getCompositeMassProperties() const {
     };
     for (const RBDynamics* n = root; n; n = next(n)) {
         if (!(n->mass < INFINITE_MASS)) infinite = true;
+        if (isRotationLock(n->m_inverseInertia)) locked = true;
         Vector p = n->getWorldPosition();
         m += n->mass;
         cx += double(n->mass) * p.x;
@@ -281,7 +307,8 @@ RBDynamics::MassProperties RBDynamics::getCompositeMassProperties() const {
         inertia += double(n->mass) * (d.squaredNorm() * Eigen::Matrix3d::Identity() - d * d.transpose());
     }
     out.inertia = gmath::fromBlock3(inertia.cast<float>());
-    out.inverseInertia = gmath::fromBlock3(inertia.inverse().cast<float>());
+    // A part whose rotation is locked (zero inverse tensor) locks the whole composite's.
+    out.inverseInertia = locked ? Matrix(0) : gmath::fromBlock3(inertia.inverse().cast<float>());
     return out;
 }
 

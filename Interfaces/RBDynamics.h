@@ -15,10 +15,11 @@
 //
 // Validation: the simulator checks every body at the start of a step and after integrating it. A body whose
 // state has become invalid (NaN or Inf anywhere, mass <= 0 or NaN, negative drag, a scaled, sheared or
-// reflected orientation, a non-positive-definite inertia tensor) is reported with error() and restored to
-// its last valid state; the scene goes on. An orientation within 1e-2 of a rotation (the drift of composing
-// many float rotations) is not an error: it is cleaned with orthoNormalize. Anything further from a rotation
-// (a scale of 2, say) is refused: the simulator never guesses which part of a scaled matrix you meant.
+// reflected orientation, a non-positive-definite inertia tensor, restitution outside [0, 1], negative
+// friction) is reported with error() and restored to its last valid state; the scene goes on. An orientation
+// within 1e-2 of a rotation (the drift of composing many float rotations) is not an error: it is cleaned with
+// orthoNormalize. Anything further from a rotation (a scale of 2, say) is refused: the simulator never
+// guesses which part of a scaled matrix you meant.
 #pragma once
 
 #include "MathDeclarations.h"
@@ -36,6 +37,8 @@ enum PhysicsType : int { // a fixed type: any int is a value, so a bad one is re
 // True when the 3x3 block of i is finite, symmetric and positive definite: a valid inertia tensor (or
 // inverse tensor).
 bool isValidInertiaTensor(const Matrix& i);
+// True when the 3x3 block of an inverse tensor is zero: infinite inertia, rotation locked (allowed).
+bool isRotationLock(const Matrix& inverse);
 
 // The mass distribution of a uniform solid, per kilogram: its volume (m^3), its centroid and its inertia per
 // kilogram about that centroid (3x3 in the upper-left), both in body-local axes relative to the body frame's
@@ -71,8 +74,8 @@ struct RBDynamics {
     // Quadratic drag F = -1/2 rho Cd A |v| v through the COM, with air density rho = 1.2 kg/m^3 and reference
     // area A = 1 m^2 (fold a body's real area into Cd). Terminal speed: sqrt(2 m g / (rho Cd A)). >= 0.
     float dragCoefficient = 0.0f;
-    float restitution = 0.5f; // 1 superball (keeps all energy), 0 clay (keeps none)
-    float friction = 0.25f;   // a contact's coefficient is the sum of both bodies' values (seed rule)
+    float restitution = 0.5f; // 1 superball (keeps all energy), 0 clay (keeps none); outside [0, 1]: refused
+    float friction = 0.25f;   // a contact's coefficient is the sum of both bodies' values (seed rule); >= 0
     Vector com;               // centre-of-mass offset from the body frame's origin, in body-local axes
     PhysicsType physicsType = PHYS_Falling;
     // Set by the simulator while the body sleeps (at rest, neither integrated nor solved); a game reads it.
@@ -105,9 +108,13 @@ struct RBDynamics {
     // Velocity of a world point moving with this body (or with the composite it belongs to): v + w x (p - c).
     Vector getVelocityAtWorldPoint(const Vector& p) const;
     // Set either tensor (3x3 in the upper-left, body-local axes about the COM); the other is kept consistent.
-    // A tensor that is not finite, symmetric and positive definite is refused with error() and nothing
-    // changes. A tensor set here (or written through the getInertiaTensor() references) is the game's: it is
-    // kept as set whatever mass or geometry the body is given later, until useShapeInertia().
+    // A tensor that is not finite, symmetric and positive definite, or whose inverse is not as a float, is
+    // refused with error() and nothing changes (1e30 kg m^2 has the inverse 1e-30 and is accepted; 1e-39, a
+    // denormal, has an inverse of 1e39 beyond the float range). Inverses are taken in double, so a 1 km rock
+    // (2.5e17 kg m^2) is accepted. A zero inverse tensor locks rotation (infinite inertia; the inertia tensor
+    // then reads zero): the body, and any composite it is part of, never turns, and an impulse or contact
+    // only pushes it. A tensor set here (or written through the getInertiaTensor() references) is the
+    // game's: it is kept as set whatever mass or geometry the body is given later, until useShapeInertia().
     //
     // Until then the tensor follows shape and mass: mass times the inertia per kilogram of the body's shape
     // about its centre of mass. The shape is every collision geometry bound to the body together (spheres,

@@ -67,7 +67,9 @@ void buildComposite(RigidBody* rootBody, const std::unordered_map<const RBDynami
                     double(p.dyn->mass) * (d.squaredNorm() * Eigen::Matrix3d::Identity() - d * d.transpose());
         }
         out.inertia = inertia.cast<float>();
-        out.invInertia = inertia.inverse().cast<float>();
+        bool locked = false; // a part with a zero inverse tensor locks the composite's rotation
+        for (const Placed& p : placed) locked = locked || isRotationLock(p.dyn->getInverseInertiaTensor());
+        out.invInertia = locked ? Mat3(Mat3::Zero()) : Mat3(inertia.inverse().cast<float>());
     }
 
     for (const Placed& p : placed) {

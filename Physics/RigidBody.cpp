@@ -8,6 +8,7 @@
 #include "iUtilities.h"
 
 #include <algorithm>
+#include <cstring>
 #include <string>
 
 namespace physics {
@@ -102,10 +103,28 @@ void RigidBody::destroy() {
     delete this;
 }
 
+namespace {
+// Bit for bit: a frame holding the same NaN as last time is not a new edit (NaN != NaN).
+bool sameBits(const Matrix& a, const Matrix& b) {
+    return std::memcmp(a.data(), b.data(), 16 * sizeof(float)) == 0;
+}
+} // namespace
+
 void RigidBody::adoptFrameEdits() {
     if (!m_frame || m_dyn.attachedTo()) return;
     Matrix w = m_frame->world();
-    if (w == m_writtenWorld) return;
+    if (w == m_writtenWorld || sameBits(w, m_writtenWorld)) return;
+    if (!w.isFinite()) {
+        // Refused once: the body keeps its state, and the frame is put back where the body is (through
+        // iFrame's members a NaN in the rotation is replaced; one in T's translation row survives
+        // translate(), and then the same NaN is not reported again).
+        error(
+            L"RigidBody: the bound frame's transform is not finite; refused, the frame is moved back to the "
+            L"body's pose");
+        setFrameWorldPose(m_frame, m_dyn.getWorldOrientation(), m_dyn.getWorldOrigin());
+        m_writtenWorld = m_frame->world();
+        return;
+    }
     m_dyn.orientation = frameWorldRotation(m_frame);
     m_dyn.position = w.position() + m_dyn.orientation.direction(m_dyn.com);
     m_writtenWorld = w;
