@@ -46,6 +46,9 @@ public:
         bool pendingDelete = false; // Delete() called during listener notification
         bool pendingRemove = false; // remove() called during listener notification
         const iRigidBody* previousBody = nullptr;
+        unsigned previousTeleports = 0; // the body's (and its root's) RBDynamics::teleports then
+        unsigned long long call = 0;    // the space's populate call that last gathered it ...
+        int entry = -1;                 // ... and its entry there
         Vector previousOrigin;
         Matrix previousRotation = Matrix(1);
     };

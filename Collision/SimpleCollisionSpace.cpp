@@ -58,6 +58,7 @@ void SimpleCollisionSpace::remove(iCollisionGeometry* o) {
 
 void SimpleCollisionSpace::removeNow(CollisionGeometry* g) {
     m_geometry.remove(g->asInterface());
+    forgetEventsOf(g);
     g->setSpace(nullptr);
     g->spaceState() = CollisionGeometry::SpaceState();
 }
@@ -121,14 +122,22 @@ bool SimpleCollisionSpace::gatherEntry(CollisionGeometry* g, bool continuous, En
         return false;
     }
     st.reportedBad = false;
-    // Fixed and sleeping bodies do not move: a pair of two of them needs no test.
     const RBDynamics* root = e.body ? e.body->getDynamics().attachmentRoot() : nullptr;
-    e.fixed = !root || root->physicsType == PHYS_FixedInSpace || root->sleeping;
+    e.teleports =
+        root ? root->teleports + (root != &e.body->getDynamics() ? e.body->getDynamics().teleports : 0) : 0;
+    // The pose of the previous call, unless the body is new here or was teleported since (never swept).
+    const bool samePath = st.hasPrevious && st.previousBody == e.body && st.previousTeleports == e.teleports;
+    // Resting bodies (fixed in space, or asleep) that did not move: a pair of two of them needs no test. One
+    // the game moved (a platform, a lift) is tested, so it can push and wake what rests on it.
+    const bool resting = !root || root->physicsType == PHYS_FixedInSpace || root->sleeping;
+    const bool movedSinceLastCall = st.hasPrevious && st.previousBody == e.body &&
+                                    (st.previousOrigin != e.origin || st.previousRotation != e.rotation);
+    e.fixed = resting && !movedSinceLastCall;
     e.first = int(m_shapes.size());
     g->worldShapes(e.origin, e.rotation, m_shapes);
     e.last = int(m_shapes.size());
     if (e.first == e.last) return false; // an empty compound
-    bool usePrevious = continuous && st.hasPrevious && st.previousBody == e.body;
+    bool usePrevious = continuous && samePath;
     e.prevOrigin = usePrevious ? st.previousOrigin : e.origin;
     e.prevRotation = usePrevious ? st.previousRotation : e.rotation;
     e.minDim = g->minDimension();
@@ -174,6 +183,7 @@ void SimpleCollisionSpace::populateContactList(float delta) {
         delta = 0.0f;
     }
     m_populating = true;
+    ++m_call;
     m_contacts.clear();
     m_features.clear();
     m_entries.clear();
@@ -182,7 +192,10 @@ void SimpleCollisionSpace::populateContactList(float delta) {
     const bool continuous = delta > 0.0f && std::isfinite(delta) && m_samplesPerSecond > 0;
     for (iCollisionGeometry* o : m_geometry) {
         Entry e;
-        if (gatherEntry(CollisionGeometry::from(o), continuous, e)) m_entries.push_back(e);
+        if (!gatherEntry(CollisionGeometry::from(o), continuous, e)) continue;
+        e.g->spaceState().call = m_call;
+        e.g->spaceState().entry = int(m_entries.size());
+        m_entries.push_back(e);
     }
     // Sort and sweep along x; planes (unbounded) meet every bounded entry.
     m_order.clear();
@@ -220,11 +233,13 @@ void SimpleCollisionSpace::populateContactList(float delta) {
         CollisionGeometry::SpaceState& st = e.g->spaceState();
         st.hasPrevious = true;
         st.previousBody = e.body;
+        st.previousTeleports = e.teleports;
         st.previousOrigin = e.origin;
         st.previousRotation = e.rotation;
     }
+    carryRestingPairs(); // pairs not tested because both rest still touch
     m_populating = false;
-    notifyListeners();
+    reportTouching();
 }
 
 extern "C" iCollisionSpace* CreateSimpleCollisionSpace(size_t samplesPerSecond) {

@@ -17,6 +17,7 @@
 
 #include "CollisionGeometry.h"
 #include "Narrowphase.h"
+#include "iCollisionEvents.h"
 #include "iCollisionQueries.h"
 #include "iCollisionSpace.h"
 #include "iContactFeatures.h"
@@ -27,7 +28,10 @@
 class iRigidBody;
 class iCollisionListener;
 
-class SimpleCollisionSpace final : public iCollisionSpace, public iCollisionQueries, public iContactFeatures {
+class SimpleCollisionSpace final : public iCollisionSpace,
+                                   public iCollisionQueries,
+                                   public iContactFeatures,
+                                   public iCollisionEvents {
 public:
     explicit SimpleCollisionSpace(size_t samplesPerSecond);
 
@@ -50,6 +54,8 @@ public:
     size_t overlapBox(const Vector& centre, const Matrix& orientation, const Vector& halfExtents,
                       std::vector<iCollisionGeometry*>& out) override;
     size_t overlapAABB(const Vector& min, const Vector& max, std::vector<iCollisionGeometry*>& out) override;
+    void holdEvents(bool hold) override { m_holdEvents = hold; }
+    void deliverEvents() override; // SpaceEvents.cpp
     void suspend() const override {}
     void release() const override {}
     // Geometries are not deleted: they leave the space (and stay usable). Clears the default space if it
@@ -65,7 +71,8 @@ public:
     struct Entry {
         CollisionGeometry* g;
         iRigidBody* body;
-        bool fixed, plane, moved;
+        bool fixed, plane, moved; // fixed: resting (fixed in space or asleep) and not moved since last call
+        unsigned teleports;       // RBDynamics::teleports of the body and its root
         Vector origin, prevOrigin;
         Matrix rotation, prevRotation;
         float motion;    // upper bound on how far any point of it moved since the previous call
@@ -73,6 +80,13 @@ public:
         float minDim;    // smallest dimension of its shapes
         int first, last; // its shapes in m_shapes
         gcol::Aabb box;  // swept over the motion when moved
+    };
+    // One touching geometry pair, as listeners hear of it.
+    struct Notice {
+        CollisionGeometry *g1, *g2; // ours (the space's entries): no cross-cast needed per notice
+        iRigidBody *b1, *b2;
+        Vector normal, pos;
+        int points;
     };
 
 private:
@@ -84,7 +98,12 @@ private:
     bool sweepSpheres(const Entry& a, const Entry& b);
     void emit(const Entry& a, const Entry& b, const gcol::ContactManifold& m, unsigned childPair,
               unsigned tag);
-    void notifyListeners();
+    void notifyListeners(std::vector<Notice>& notices);
+    // SpaceEvents.cpp: the pairs still touching (resting pairs carried from their last contact), and HitWall
+    // now or held for deliverEvents.
+    void carryRestingPairs();
+    void reportTouching();
+    void forgetEventsOf(const CollisionGeometry* g);
     void finishNotifications();
     bool queryShapes(iCollisionGeometry* ig, std::vector<gcol::WorldShape>& out);
 
@@ -96,13 +115,12 @@ private:
     std::vector<Entry> m_entries;
     std::vector<gcol::WorldShape> m_shapes, m_scratchA, m_scratchB;
     std::vector<int> m_order, m_planes;
-    struct Notice {
-        CollisionGeometry *g1, *g2; // ours (the space's entries): no cross-cast needed per notice
-        iRigidBody *b1, *b2;
-        Vector normal, pos;
-        int points;
-    };
-    std::vector<Notice> m_notices;
+    std::vector<Notice> m_notices;  // this call's touching pairs, then the resting ones carried over
+    std::vector<Notice> m_touching; // the pairs touching at the last call
+    std::vector<Notice> m_held;     // pairs that touched since the last delivery (events held)
+    std::vector<Notice> m_delivery; // scratch
+    bool m_holdEvents = false;
+    unsigned long long m_call = 0; // populateContactList calls, to tell this call's entries
     std::vector<iCollisionListener*> m_listenerSnapshot;
     std::vector<CollisionGeometry*> m_pendingRemove, m_pendingDelete;
     bool m_notifying = false;

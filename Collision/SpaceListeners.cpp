@@ -23,13 +23,13 @@ bool stillBound(CollisionGeometry* g, iRigidBody* b) {
 
 } // namespace
 
-void SimpleCollisionSpace::notifyListeners() {
-    // One notice per body pair, in the order the pairs were found.
+void SimpleCollisionSpace::notifyListeners(std::vector<Notice>& notices) {
+    // One notice per body pair, the first one listed.
     m_order.clear();
-    for (int i = 0; i < int(m_notices.size()); ++i) m_order.push_back(i);
-    auto key = [this](int i) {
-        auto x = reinterpret_cast<std::uintptr_t>(m_notices[size_t(i)].b1);
-        auto y = reinterpret_cast<std::uintptr_t>(m_notices[size_t(i)].b2);
+    for (int i = 0; i < int(notices.size()); ++i) m_order.push_back(i);
+    auto key = [&notices](int i) {
+        auto x = reinterpret_cast<std::uintptr_t>(notices[size_t(i)].b1);
+        auto y = reinterpret_cast<std::uintptr_t>(notices[size_t(i)].b2);
         return std::make_pair(std::min(x, y), std::max(x, y));
     };
     std::sort(m_order.begin(), m_order.end(), [&](int a, int b) {
@@ -37,9 +37,9 @@ void SimpleCollisionSpace::notifyListeners() {
         return ka < kb || (ka == kb && a < b);
     });
     for (size_t i = 1; i < m_order.size(); ++i)
-        if (key(m_order[i]) == key(m_order[i - 1])) m_notices[size_t(m_order[i])].points = 0; // duplicate
+        if (key(m_order[i]) == key(m_order[i - 1])) notices[size_t(m_order[i])].points = 0; // duplicate
     m_notifying = true;
-    for (const Notice& n : m_notices) {
+    for (const Notice& n : notices) {
         if (n.points == 0) continue;
         for (int side = 0; side < 2; ++side) {
             iRigidBody* self = side == 0 ? n.b1 : n.b2;

@@ -83,6 +83,13 @@ struct RBDynamics {
     // of bodies that are each sleeping or fixed, so a resting pile costs next to nothing. Not copied by
     // operator= (it is the simulator's state, not a property).
     bool sleeping = false;
+    // Teleports: how many times the body was put somewhere rather than moved there (a respawn). A collision
+    // space never sweeps a body across a teleport, so nothing between the old and the new place is hit or
+    // hears HitWall. The simulator counts every write of position or orientation (or a moved frame) itself;
+    // a game's own iRigidBody (the collision-only route) calls markTeleported() when it jumps. Not copied by
+    // operator= (it is the body's history, not a property).
+    unsigned teleports = 0;
+    void markTeleported() { ++teleports; }
     Matrix orientation = Matrix(1); // rotation (body local -> world), orthonormal, never scaled
     Vector angularVelocity;         // rad/s, world axes
     Vector angularMomentum;         // about the COM, world axes (kg m^2/s)

@@ -93,8 +93,14 @@ void Islands::build(const std::vector<RigidBody*>& bodies, const SceneBodyAccess
         auto index = m_index.find(body->second);
         return index == m_index.end() ? -1 : index->second;
     };
+    m_pushed.assign(m_parent.size(), 0);
+    m_outsidersNext.clear();
     for (size_t i = 0; contacts && i < count; ++i) {
         int a = islandOf(contacts[i].g1), b = islandOf(contacts[i].g2);
+        if ((a < 0) != (b < 0)) { // an island member and something outside the islands
+            iRigidBody* outside = (a < 0 ? contacts[i].g1 : contacts[i].g2)->getRigidBody();
+            if (outside && outsiderMoves(outside->getDynamics())) m_pushed[size_t(a < 0 ? b : a)] = 1;
+        }
         if (a < 0 || b < 0) continue;
         a = find(a);
         b = find(b);
@@ -102,8 +108,21 @@ void Islands::build(const std::vector<RigidBody*>& bodies, const SceneBodyAccess
     }
 }
 
-void Islands::wakeTouched(const std::vector<RigidBody*>& bodies) const {
+bool Islands::outsiderMoves(const RBDynamics& body) {
+    const RBDynamics& d = *body.attachmentRoot();
+    Pose now{d.position, d.orientation};
+    auto before = m_outsiders.find(&d);
+    bool moves = d.velocity != Vector() || d.angularVelocity != Vector() || before == m_outsiders.end() ||
+                 before->second.position != now.position || before->second.orientation != now.orientation;
+    m_outsidersNext[&d] = now;
+    return moves;
+}
+
+void Islands::wakeTouched(const std::vector<RigidBody*>& bodies) {
+    m_outsiders.swap(m_outsidersNext);
     std::vector<char> awake(m_parent.size(), 0);
+    for (size_t i = 0; i < m_pushed.size(); ++i)
+        if (m_pushed[i]) awake[find(int(i))] = 1;
     for (RigidBody* b : bodies) {
         auto it = m_index.find(b);
         if (it != m_index.end() && !b->asleep()) awake[find(it->second)] = 1;

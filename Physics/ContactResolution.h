@@ -49,8 +49,10 @@ class Islands {
 public:
     void build(const std::vector<RigidBody*>& bodies, const SceneBodyAccess::BodyMap& byDynamics,
                const CollisionContact* contacts, size_t count);
-    // Wakes every sleeping body that shares an island with an awake movable body.
-    void wakeTouched(const std::vector<RigidBody*>& bodies) const;
+    // Wakes every sleeping body that shares an island with an awake movable body, or whose island touches
+    // a moving body outside the islands (fixed in space, kinematic or a game's own, with a velocity or moved
+    // since the last step: a platform, a lift).
+    void wakeTouched(const std::vector<RigidBody*>& bodies);
     // Adds dt of rest to bodies below the sleep speeds; an island whose bodies all rested long enough sleeps.
     // (resolveContacts zeroes the rest time of a body still being pushed out of an overlap.)
     void updateSleep(const std::vector<RigidBody*>& bodies, float dt);
@@ -60,8 +62,16 @@ public:
 
 private:
     int find(int i) const;
+    // Whether a body outside the islands moves; records its pose for the next step's question.
+    bool outsiderMoves(const RBDynamics& d);
+    struct Pose {
+        Vector position;
+        Matrix orientation;
+    };
     std::unordered_map<const RigidBody*, int> m_index;
     mutable std::vector<int> m_parent;
+    std::vector<char> m_pushed; // per island member: touched by a moving outsider
+    std::unordered_map<const RBDynamics*, Pose> m_outsiders, m_outsidersNext; // last step's poses, this one's
 };
 
 } // namespace physics

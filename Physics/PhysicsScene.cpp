@@ -234,9 +234,16 @@ void PhysicsScene::update(int now) {
         // Nothing to integrate: suspended, the first update, or the clock went back (re-based, not replayed).
         m_lastNow = now;
         m_hasTimeBase = true;
-        if (!m_suspended) writeFrames(float(m_accumulator) / 1000.0f);
+        if (m_suspended) return;
+        deliverCollisionEvents(); // what still touches is heard every frame
+        if (m_deleteRequested) {
+            delete this;
+            return;
+        }
+        writeFrames(float(m_accumulator) / 1000.0f);
         return;
     }
+    holdCollisionEvents();
     m_accumulator += (std::int64_t(now) - m_lastNow) * m_stepRate;
     m_lastNow = now;
     const float dt = 1.0f / float(m_stepRate);
@@ -257,6 +264,7 @@ void PhysicsScene::update(int now) {
                   L"simulated time; the game runs slower than real time (reported once)");
         }
     }
+    if (!m_deleteRequested) deliverCollisionEvents(); // HitWall once a frame per touching pair
     if (m_deleteRequested) {
         delete this;
         return;
@@ -276,7 +284,8 @@ void PhysicsScene::step(float dt) {
     // 1. Game code at the physics rate. It may add, remove or delete bodies: removals wait for step 9.
     runFixedUpdaters(dt);
 
-    // 2. Take in the game's edits: a moved frame teleports its body; an invalid state is reported and
+    // 2. Take in the game's edits: a written pose or a moved frame teleports the body; an invalid state is
+    // reported and
     //    replaced by the body's last valid one; a sleeping body the game touched wakes. The pose now is where
     //    this step's interpolation starts. An inertia tensor the engine derives catches up with the mass and
     //    com the game may have written (RBDynamics.h); integrateComposite then keeps the angular velocity.
@@ -290,11 +299,13 @@ void PhysicsScene::step(float dt) {
         }
         b->setAsleep(false); // before the space looks: its pairs are tested again
         b->adoptFrameEdits();
-        if (b->validate("before a step")) b->snapshotValid(); // the game's valid edits are kept on failure
+        if (b->movedByGame()) b->getDynamics().markTeleported(); // spaces do not sweep across it
+        if (b->validate("before a step")) b->snapshotValid();    // the game's valid edits are kept on failure
         b->recordPreviousPose();
     }
 
-    // 3. Contacts at the step's starting poses. Listeners hear of them now (HitWall), and may delete things.
+    // 3. Contacts at the step's starting poses. Listeners hear of them after the steps (HitWall, once per
+    //    frame), or now with a space that cannot hold its events; they may delete things.
     const CollisionContact* contacts = nullptr;
     size_t contactCount = 0;
     if (m_space) {

@@ -83,6 +83,10 @@ private:
     void integrateComposite(RigidBody* root, float dt);
     void resolveContacts(const CollisionContact* contacts, size_t count, float dt);
     void flushDeferred();
+    // HitWall once a frame (iCollisionEvents): the space holds its events while the scene steps, and the
+    // scene delivers them after the steps (PhysicsSceneContacts.cpp).
+    void holdCollisionEvents();
+    void deliverCollisionEvents();
     void writeFrames(float alpha);
     RigidBody* sceneBody(const iRigidBody* o) const; // o if it is one of this scene's bodies, else nullptr
 

@@ -3,6 +3,7 @@
 
 #include "MathEigen.h"
 #include "RigidBody.h"
+#include "iCollisionEvents.h"
 #include "iUtilities.h"
 
 namespace physics {
@@ -11,6 +12,19 @@ void PhysicsScene::resolveContacts(const CollisionContact* contacts, size_t coun
     SceneBodyAccess access(m_byDynamics, toEigen(m_gravity));
     m_solver.solve(contacts, count, dt, access);
     access.acceptWrites(m_solver.bodies());
+}
+
+void PhysicsScene::holdCollisionEvents() {
+    if (iCollisionEvents* events = m_space ? eventsOf(m_space) : nullptr) events->holdEvents(true);
+}
+
+void PhysicsScene::deliverCollisionEvents() {
+    iCollisionEvents* events = m_space ? eventsOf(m_space) : nullptr;
+    if (!events) return;
+    m_busy = true; // listeners may delete bodies: deferred as in a step
+    events->deliverEvents();
+    m_busy = false;
+    flushDeferred();
 }
 
 bool PhysicsScene::setSolverIterations(int n) {

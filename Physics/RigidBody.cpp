@@ -160,15 +160,19 @@ bool RigidBody::editedWhileAsleep() const {
     const RBDynamics& d = m_dyn;
     return d.velocity != zero || d.angularVelocity != zero || d.angularMomentum != zero || d.force != zero ||
            d.temporalForce != zero || d.acceleration != zero || d.torque != zero ||
-           d.temporalTorque != zero || d.getWorldPosition() != m_stepPosition ||
-           d.getWorldOrientation() != m_stepOrientation;
+           d.temporalTorque != zero || movedByGame();
+}
+
+bool RigidBody::movedByGame() const {
+    return m_dyn.getWorldPosition() != m_stepPosition || m_dyn.getWorldOrientation() != m_stepOrientation;
 }
 
 void RigidBody::writeFrame(float alpha) {
     if (!m_frame) return;
     adoptFrameEdits();
     // The game moved the body (its dynamics) since the last step: show it there, do not smear towards it.
-    if (m_dyn.getWorldPosition() != m_stepPosition || m_dyn.getWorldOrientation() != m_stepOrientation) {
+    if (movedByGame()) {
+        m_dyn.markTeleported(); // the next step will not see the edit: say it here
         recordPreviousPose();
         recordStepPose();
     }

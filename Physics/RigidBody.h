@@ -9,6 +9,7 @@
 #include "MathBridge.h"
 #include "RBDynamics.h"
 #include "iRigidBody.h"
+#include "iRigidBodyMotion.h"
 
 #include <vector>
 
@@ -20,7 +21,7 @@ namespace physics {
 
 class PhysicsScene;
 
-class RigidBody final : public iRigidBody {
+class RigidBody final : public iRigidBody, public iRigidBodyMotion {
 public:
     explicit RigidBody(iFrame* frame);
     RigidBody(const RigidBody&) = delete;
@@ -41,6 +42,11 @@ public:
     void suspend() const override {}
     void release() const override {}
     void Delete() const override;
+
+    // --- iRigidBodyMotion (BodyMotion.cpp) ---
+    bool teleport(const Vector& position, const Matrix& orientation) override;
+    bool moveTo(const Vector& position, const Matrix& orientation, float seconds) override;
+    void wake() override;
 
     // --- the scene's side ---
     PhysicsScene* scene() const { return m_scene; }
@@ -81,6 +87,9 @@ public:
     // True when the game touched a sleeping body's state since its last step: a velocity, a force or
     // torque, or a new pose. Such a body wakes.
     bool editedWhileAsleep() const;
+    // True when the world pose differs from the one the last step ended with: the game put the body
+    // somewhere (a teleport, RBDynamics::teleports).
+    bool movedByGame() const;
 
     // Angular bookkeeping of a root, written after each step: a differing field is a game edit.
     Vector writtenOmega, writtenMomentum;

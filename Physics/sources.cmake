@@ -1,5 +1,6 @@
 # The simulator's files, relative to Physics/ (also read by the package generator).
 set(GUARDIAN_PHYSICS_SOURCES
+  BodyMotion.cpp
   BodyValidation.cpp
   Composite.cpp
   FrameDriver.cpp

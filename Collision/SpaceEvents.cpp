@@ -1,0 +1,70 @@
+// SpaceEvents.cpp - which pairs the simple space reports as touching, and when listeners hear of them.
+//
+// A pair is touching when this call's test found contact, or when it was not tested because both bodies
+// rest (fixed or asleep, and not moved) and it touched when last tested: sleeping hides no contact. Listeners
+// hear of the touching pairs at the end of each populateContactList, or, with events held (a physics scene
+// stepping several times a frame), once per body pair in deliverEvents.
+#include "SimpleCollisionSpace.h"
+#include "iUtilities.h"
+
+#include <algorithm>
+#include <functional>
+#include <tuple>
+
+namespace {
+
+// Keeps one notice of each geometry pair (the first one listed).
+void dropRepeats(std::vector<SimpleCollisionSpace::Notice>& notices) {
+    using Notice = SimpleCollisionSpace::Notice;
+    auto key = [](const Notice& n) { return std::make_tuple(n.g1, n.g2, n.b1, n.b2); };
+    std::stable_sort(notices.begin(), notices.end(),
+                     [&key](const Notice& a, const Notice& b) { return std::less<>()(key(a), key(b)); });
+    notices.erase(std::unique(notices.begin(), notices.end(),
+                              [&key](const Notice& a, const Notice& b) { return key(a) == key(b); }),
+                  notices.end());
+}
+
+} // namespace
+
+void SimpleCollisionSpace::carryRestingPairs() {
+    auto entryOf = [this](CollisionGeometry* g) -> const Entry* {
+        const CollisionGeometry::SpaceState& st = g->spaceState();
+        return st.call == m_call ? &m_entries[size_t(st.entry)] : nullptr;
+    };
+    for (const Notice& n : m_touching) {
+        const Entry* a = entryOf(n.g1);
+        const Entry* b = entryOf(n.g2);
+        // Tested this call (its own result stands), or gone, or rebound: not carried.
+        if (!a || !b || a->body != n.b1 || b->body != n.b2 || !a->fixed || !b->fixed) continue;
+        m_notices.push_back(n);
+    }
+}
+
+void SimpleCollisionSpace::reportTouching() {
+    m_touching = m_notices;
+    if (!m_holdEvents) {
+        notifyListeners(m_notices);
+        return;
+    }
+    m_held.insert(m_held.end(), m_notices.begin(), m_notices.end());
+    // A game that holds events and never delivers them keeps only one notice per pair.
+    if (m_held.size() > 8 * (m_touching.size() + 64)) dropRepeats(m_held);
+}
+
+void SimpleCollisionSpace::deliverEvents() {
+    if (m_notifying || m_populating) {
+        error(L"iCollisionEvents::deliverEvents: called from inside a listener; ignored");
+        return;
+    }
+    // The latest contact of a pair still touching first: notifyListeners keeps the first of each body pair.
+    m_delivery = m_touching;
+    m_delivery.insert(m_delivery.end(), m_held.begin(), m_held.end());
+    m_held.clear();
+    notifyListeners(m_delivery);
+}
+
+void SimpleCollisionSpace::forgetEventsOf(const CollisionGeometry* g) {
+    auto involves = [g](const Notice& n) { return n.g1 == g || n.g2 == g; };
+    m_touching.erase(std::remove_if(m_touching.begin(), m_touching.end(), involves), m_touching.end());
+    m_held.erase(std::remove_if(m_held.begin(), m_held.end(), involves), m_held.end());
+}
