@@ -25,8 +25,11 @@ struct PerUpdate final : iCollisionListener {
 
 // A ball resting on a fixed box, updated at `hz` frames per second: counts calls per update.
 struct RestingBall {
-    explicit RestingBall(float frameHz) : hz(frameHz) {
-        ground = s.world->fixedBox(Vector(0, -0.5f, 0), Vector(5, 0.5f, 5));
+    RestingBall(float frameHz, bool onPlane) : hz(frameHz) {
+        if (onPlane)
+            s.world->ground(); // a plane with no body: HitWall's other is nullptr
+        else
+            ground = s.world->fixedBox(Vector(0, -0.5f, 0), Vector(5, 0.5f, 5));
         ball = s.world->sphere(Vector(0, 0.249f, 0), 0.25f, 1.0f); // touching from the start
         ball->getRB()->attachListener(&listener);
     }
@@ -40,30 +43,32 @@ struct RestingBall {
     SceneFixture s; // its first update(0) set the time base
     float hz;
     long frames = 0;
-    iPhysicsFrame *ground, *ball;
+    iPhysicsFrame *ground = nullptr, *ball;
     PerUpdate listener;
 };
 
 } // namespace
 
 // At 60 Hz (one step a frame), 144 Hz (frames without a step) and 20 Hz (three steps a frame): exactly one
-// call per update while touching, before and for 1 s after the ball fell asleep.
+// call per update while touching, before and for 1 s after the ball fell asleep; on a box and on a plane.
 TEST(HitWallPerFrame, OncePerUpdateAwakeAndAsleep) {
-    for (float hz : {60.0f, 144.0f, 20.0f}) {
-        RestingBall r(hz);
-        int framesAsleep = 0, framesAwake = 0;
-        for (int i = 0; i < int(4 * hz) && framesAsleep < int(hz); ++i) {
-            int calls = r.frame();
-            if (statsOf(r.s.scene)->getStepCount() == 0) continue; // nothing computed yet: nothing known
-            bool asleep = r.ball->getDynamics()->sleeping;
-            (asleep ? framesAsleep : framesAwake) += 1;
-            ASSERT_EQ(calls, 1) << hz << " Hz, frame " << i << (asleep ? " asleep" : " awake");
+    for (int onPlane = 0; onPlane < 2; ++onPlane)
+        for (float hz : {60.0f, 144.0f, 20.0f}) {
+            RestingBall r(hz, onPlane);
+            int framesAsleep = 0, framesAwake = 0;
+            for (int i = 0; i < int(4 * hz) && framesAsleep < int(hz); ++i) {
+                int calls = r.frame();
+                if (statsOf(r.s.scene)->getStepCount() == 0) continue; // nothing computed yet: nothing known
+                bool asleep = r.ball->getDynamics()->sleeping;
+                (asleep ? framesAsleep : framesAwake) += 1;
+                ASSERT_EQ(calls, 1) << hz << " Hz, frame " << i << (asleep ? " asleep" : " awake");
+            }
+            EXPECT_EQ(framesAsleep, int(hz)) << hz << " Hz: the ball never slept";
+            EXPECT_GT(framesAwake, 0);
+            EXPECT_EQ(r.listener.lastOther, onPlane ? nullptr : r.ground->getRB());
+            EXPECT_NEAR(r.listener.lastNormal.y, -1.0f,
+                        1e-4f); // toward the other body: down, into the ground
         }
-        EXPECT_EQ(framesAsleep, int(hz)) << hz << " Hz: the ball never slept";
-        EXPECT_GT(framesAwake, 0);
-        EXPECT_EQ(r.listener.lastOther, r.ground->getRB());
-        EXPECT_NEAR(r.listener.lastNormal.y, -1.0f, 1e-4f); // toward the other body: down, into the ground
-    }
 }
 
 // A ball dropped from 1 m hears nothing while it falls (t = sqrt(2 h / g) = 0.45 s less its radius) and is

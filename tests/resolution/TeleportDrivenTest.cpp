@@ -126,22 +126,29 @@ TEST(Driven, MoveToArrivesAtTheTargetPose) {
     for (int i = 0; i < 16; ++i) EXPECT_NEAR(got[i], turn.data()[i], 1e-4f) << i;
 }
 
-// A kinematic paddle driven at 5 m/s through a floating ball pushes it ahead: the ball never ends up behind
-// the paddle's front face, and leaves at least at the paddle's speed.
+// A kinematic paddle driven through a floating ball pushes it ahead, never through it: the ball leaves at
+// (1 + e) v, the rebound off an infinitely heavy wall moving at v (e = 0.5 for both). At 5 m/s the ball's
+// surface never falls behind the paddle's face by more than 2 cm; faster, the hit is found a step late and
+// the ball overlaps the paddle for that step (a measured limit in README), but it still goes ahead.
 TEST(Driven, KinematicPaddlePushesWhatIsInItsWay) {
-    SceneFixture s;
-    settingsOf(s.scene)->setGravity(Vector());
-    iPhysicsFrame* paddle = s.world->box(Vector(-2, 0, 0), Vector(0.1f, 1, 1), 1.0f);
-    paddle->getDynamics()->mass = INFINITE_MASS;
-    paddle->getDynamics()->velocity = Vector(5, 0, 0);
-    iPhysicsFrame* ball = s.world->sphere(Vector(0, 0, 0), 0.25f, 1.0f);
-    float worstLag = 0; // how far the ball's surface got behind the paddle's front face
-    s.seconds(1.0f, [&] {
-        float front = paddle->getDynamics()->position.x + 0.1f;
-        worstLag = std::fmax(worstLag, front - (ball->getDynamics()->position.x - 0.25f));
-    });
-    EXPECT_LT(worstLag, 0.02f);
-    EXPECT_GE(ball->getDynamics()->velocity.x, 5.0f - 0.05f);
+    for (float v : {5.0f, 30.0f, 300.0f, 1000.0f}) {
+        SceneFixture s;
+        settingsOf(s.scene)->setGravity(Vector());
+        iPhysicsFrame* paddle = s.world->box(Vector(-2, 0, 0), Vector(0.1f, 1, 1), 1.0f);
+        paddle->getDynamics()->mass = INFINITE_MASS;
+        paddle->getDynamics()->velocity = Vector(v, 0, 0);
+        iPhysicsFrame* ball = s.world->sphere(Vector(0, 0, 0), 0.25f, 1.0f);
+        float worstLag = 0; // how far the ball's surface got behind the paddle's front face
+        s.steps(int(60 * 4.0f / v) + 30, [&] {
+            float front = paddle->getDynamics()->position.x + 0.1f;
+            worstLag = std::fmax(worstLag, front - (ball->getDynamics()->position.x - 0.25f));
+        });
+        EXPECT_GT(ball->getDynamics()->position.x - 0.25f, paddle->getDynamics()->position.x + 0.1f) << v;
+        EXPECT_NEAR(ball->getDynamics()->velocity.x, 1.5f * v, 0.01f * v) << v;
+        if (v <= 5.0f) {
+            EXPECT_LT(worstLag, 0.02f);
+        }
+    }
 }
 
 // A platform driven up 0.8 m with moveTo, every frame, under a ball that has gone to sleep on it: the ball
