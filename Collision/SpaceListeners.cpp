@@ -1,7 +1,7 @@
-// SpaceListeners.cpp - HitWall notifications after the contact list is built, and the deferred removals
-// and deletions listeners ask for.
+// SpaceListeners.cpp - HitWall notifications (of the pairs SpaceEvents.cpp says touch), and the deferred
+// removals and deletions listeners ask for.
 //
-// Each touching body pair gets one call per populateContactList on each side (the normal points toward
+// Each touching body pair gets one call per notification on each side (the normal points toward
 // `other`, so g1's body gets the contact normal and g2's body its negation). Listeners may detach listeners,
 // remove or delete geometry, or delete bodies during the calls: the listener list is iterated from a
 // snapshot (a listener detached meanwhile is not called), a body whose geometry was unbound (it died) gets
