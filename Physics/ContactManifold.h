@@ -49,7 +49,10 @@ struct ContactPoint {
     float normalMass = 0, tangentMass[2] = {0, 0};
     float normalImpulse = 0, tangentImpulse[2] = {0, 0}; // accumulated, per sub-step
     float approachSpeed = 0;    // v_n when the solve began (negative: approaching), for restitution
+    float forceSpeed = 0;       // what this step's forces added to v_n (a_n dt)
+    float touchSpeed2 = 0;      // v_n^2 at the moment the point touched (the energy a bounce returns)
     float maxNormalImpulse = 0; // over the sub-steps: a point that never pushed does not bounce
+    bool bounced = false;       // it bounced: it left the surface and is not kept next step
 };
 
 struct Manifold {
@@ -59,6 +62,7 @@ struct Manifold {
     RBDynamics *rootA = nullptr, *rootB = nullptr; // the bodies (nullptr: the static world)
     int age = 0; // steps since the detector last reported the pair (a kept manifold lives one step)
     float friction = 0, restitution = 0;
+    bool bounces = false; // a point bounces this step: its overlap is projected out entirely
     int count = 0;
     ContactPoint points[4];
 };

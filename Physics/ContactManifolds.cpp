@@ -115,6 +115,7 @@ void ContactSolver::keepPoints(const SolverBodyAccess& access,
         const int reportedCount = m.count;
         for (int j = 0; j < old.count && m.count < 4; ++j) {
             const ContactPoint& o = old.points[j];
+            if (o.bounced) continue; // it left the surface
             bool known = false;
             for (int i = 0; i < reportedCount && !known; ++i)
                 known = (m.points[i].anchorA - o.anchorA).squaredNorm() <= match2;

@@ -5,6 +5,7 @@ set(GUARDIAN_PHYSICS_SOURCES
   FrameDriver.cpp
   ContactManifolds.cpp
   ContactResolution.cpp
+  ContactRestitution.cpp
   ContactSolver.cpp
   Integrators.cpp
   PhysicsFrame.cpp
@@ -18,6 +19,7 @@ set(GUARDIAN_PHYSICS_HEADERS
   ContactManifold.h
   ContactResolution.h
   ContactSolver.h
+  SolverRows.h
   Integrators.h
   MathBridge.h
   PhysicsScene.h
