@@ -113,7 +113,9 @@ private:
     void solveContacts(float h, bool pushOut);
     void solveNormal(Manifold& m, const Target* target);
     void solveFriction(Manifold& m);
+    void saveVelocities();
     void moveBodies(float h);
+    void restoreVelocities();
     // ContactRestitution.cpp
     static void prepareBounce(const SolverBody& a, const SolverBody& b, ContactPoint& p, float dt);
     void findBounces();
