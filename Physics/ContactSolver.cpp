@@ -84,6 +84,7 @@ void ContactSolver::solve(const CollisionContact* contacts, size_t count, float 
     buildManifolds(contacts, count, access);
     matchPreviousImpulses();
     prepare(dt);
+    orderByLevel();
     startBodies();
     const int n = std::max(1, m_settings.substeps);
     const float h = dt / float(n);
@@ -99,6 +100,7 @@ void ContactSolver::solve(const CollisionContact* contacts, size_t count, float 
         addForces(1.0f / float(n));
         warmStart(i == 0);
         solveContacts(h, false); // the velocities: approach stopped, nothing pushed
+        propagateShock(h);       // what a light body under a heavy one could not stop
         saveVelocities();
         solveContacts(h, true);  // the push out, on top
         moveBodies(h);           // by the velocities plus the push, capped
@@ -194,7 +196,11 @@ void ContactSolver::warmStart(bool firstSubstep) {
 //    two passes, 0.001 rad/s and 1 cm.
 // pushOut: overlap is pushed out softly; otherwise (relax) only approach is stopped.
 void ContactSolver::solveContacts(float h, bool pushOut) {
-    for (Manifold& m : m_manifolds) {
+    for (Manifold& m : m_manifolds) solveManifold(m, h, pushOut);
+}
+
+void ContactSolver::solveManifold(Manifold& m, float h, bool pushOut) {
+    {
         // Positions do not change within a sweep: each point's target is worked out once.
         const SolverBody &a = m_bodies[m.a], &b = m_bodies[m.b];
         Target target[4];

@@ -111,11 +111,15 @@ private:
         float bias = 0, massScale = 1, impulseScale = 0;
     };
     void solveContacts(float h, bool pushOut);
+    void solveManifold(Manifold& m, float h, bool pushOut);
     void solveNormal(Manifold& m, const Target* target);
     void solveFriction(Manifold& m);
     void saveVelocities();
     void moveBodies(float h);
     void restoreVelocities();
+    // ShockPropagation.cpp
+    void orderByLevel();
+    void propagateShock(float h);
     // ContactRestitution.cpp
     static void prepareBounce(const SolverBody& a, const SolverBody& b, ContactPoint& p, float dt);
     void findBounces();
@@ -135,6 +139,11 @@ private:
     static constexpr int kRestitutionSweeps = 8;
     static constexpr float kBounceGap = 1e-4f;      // m: a bouncing pair is left this far apart
     std::vector<std::pair<size_t, int>> m_bouncing; // (manifold, point) of the points that bounce this step
+    // Shock propagation: each body's contact distance from the immovable world, the manifolds each body is
+    // in, and the manifolds between levels, lowest first, with whether b is the upper body.
+    std::vector<int> m_level;
+    std::vector<std::vector<int>> m_touching;
+    std::vector<std::pair<size_t, bool>> m_shock;
     // The soft contact for the current sub-step length.
     float m_biasRate = 0, m_massScale = 1, m_impulseScale = 0;
 };

@@ -11,7 +11,8 @@ set(GUARDIAN_PHYSICS_SOURCES
   PhysicsFrame.cpp
   PhysicsScene.cpp
   PhysicsSceneContacts.cpp
-  RigidBody.cpp)
+  RigidBody.cpp
+  ShockPropagation.cpp)
 set(GUARDIAN_PHYSICS_HEADERS
   BodyValidation.h
   Composite.h
