@@ -46,6 +46,10 @@ bool singleSphere(const SimpleCollisionSpace::Entry& e, const std::vector<gcol::
 void SimpleCollisionSpace::emit(const Entry& a, const Entry& b, const gcol::ContactManifold& m,
                                 unsigned childPair, unsigned tag) {
     for (int i = 0; i < m.count; ++i) {
+        if (full()) { // the budget: the pair's remaining contacts are dropped
+            m_cut = true;
+            return;
+        }
         const gcol::ContactPoint& p = m.points[i];
         CollisionContact c;
         c.pos = p.pos;
@@ -117,7 +121,12 @@ bool SimpleCollisionSpace::sweepSpheres(const Entry& a, const Entry& b) {
 void SimpleCollisionSpace::testPair(const Entry& a, const Entry& b, float delta) {
     if (a.body && a.body == b.body) return;
     if (a.fixed && b.fixed) return;
+    if (full()) { // the contact budget is spent: the pair is dropped untested
+        ++m_droppedPairs;
+        return;
+    }
     const size_t before = m_contacts.size();
+    m_cut = false;
     bool hit = testAtPoses(a, b, 1.0f, 0);
     if (!hit && delta > 0.0f && (a.moved || b.moved) && !a.plane && !b.plane) {
         Vector rel = (a.origin - a.prevOrigin) - (b.origin - b.prevOrigin);
@@ -139,7 +148,8 @@ void SimpleCollisionSpace::testPair(const Entry& a, const Entry& b, float delta)
             }
         }
     }
-    if (!hit) return;
+    if (m_cut) ++m_droppedPairs; // cut off part way, perhaps entirely
+    if (!hit || m_contacts.size() == before) return;
     // One notice per geometry pair: the average contact position (the centre of the overlap area).
     Notice n;
     n.g1 = a.g;

@@ -184,6 +184,7 @@ void SimpleCollisionSpace::populateContactList(float delta) {
     }
     m_populating = true;
     ++m_call;
+    m_droppedPairs = 0;
     m_contacts.clear();
     m_features.clear();
     m_entries.clear();
@@ -207,6 +208,14 @@ void SimpleCollisionSpace::populateContactList(float delta) {
         return ma < mb || (ma == mb && a < b);
     });
     const float stepDelta = continuous ? delta : 0.0f;
+    // Planes first: when the contact budget fills, the ground is the last thing to lose.
+    for (int p : m_planes)
+        for (int i : m_order) {
+            if (p < i)
+                testPair(m_entries[size_t(p)], m_entries[size_t(i)], stepDelta);
+            else
+                testPair(m_entries[size_t(i)], m_entries[size_t(p)], stepDelta);
+        }
     for (size_t oi = 0; oi < m_order.size(); ++oi) {
         const Entry& a = m_entries[size_t(m_order[oi])];
         for (size_t oj = oi + 1; oj < m_order.size(); ++oj) {
@@ -221,13 +230,12 @@ void SimpleCollisionSpace::populateContactList(float delta) {
                 testPair(b, a, stepDelta);
         }
     }
-    for (int p : m_planes)
-        for (int i : m_order) {
-            if (p < i)
-                testPair(m_entries[size_t(p)], m_entries[size_t(i)], stepDelta);
-            else
-                testPair(m_entries[size_t(i)], m_entries[size_t(p)], stepDelta);
-        }
+    if (m_droppedPairs > 0 && !m_reportedDrops) {
+        m_reportedDrops = true;
+        error(
+            L"SimpleCollisionSpace: the contact budget (iContactBudget.h) is full; touching pairs beyond it "
+            L"are dropped until bodies move apart (reported once)");
+    }
     // Remember this call's poses for the next call's sampling.
     for (const Entry& e : m_entries) {
         CollisionGeometry::SpaceState& st = e.g->spaceState();
@@ -240,6 +248,15 @@ void SimpleCollisionSpace::populateContactList(float delta) {
     carryRestingPairs(); // pairs not tested because both rest still touch
     m_populating = false;
     reportTouching();
+}
+
+bool SimpleCollisionSpace::setContactBudget(size_t maxContacts) {
+    if (maxContacts == 0) {
+        error(L"iContactBudget::setContactBudget: the budget must be at least 1 contact; unchanged");
+        return false;
+    }
+    m_budget = maxContacts;
+    return true;
 }
 
 extern "C" iCollisionSpace* CreateSimpleCollisionSpace(size_t samplesPerSecond) {

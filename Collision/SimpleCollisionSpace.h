@@ -12,6 +12,8 @@
 //  4. runs the exact pair test at the current pose, and when nothing touches and the pair moved fast,
 //     the continuous tests (ContinuousPairTest.cpp);
 //  5. notifies listeners (SpaceListeners.cpp).
+// At most the contact budget's contacts are reported (iContactBudget.h): once it is full, the remaining
+// candidate pairs are dropped untested.
 // Storage is reused between calls: after warm-up a call does not allocate.
 #pragma once
 
@@ -20,6 +22,7 @@
 #include "iCollisionEvents.h"
 #include "iCollisionQueries.h"
 #include "iCollisionSpace.h"
+#include "iContactBudget.h"
 #include "iContactFeatures.h"
 
 #include <list>
@@ -31,7 +34,8 @@ class iCollisionListener;
 class SimpleCollisionSpace final : public iCollisionSpace,
                                    public iCollisionQueries,
                                    public iContactFeatures,
-                                   public iCollisionEvents {
+                                   public iCollisionEvents,
+                                   public iContactBudget {
 public:
     explicit SimpleCollisionSpace(size_t samplesPerSecond);
 
@@ -56,6 +60,9 @@ public:
     size_t overlapAABB(const Vector& min, const Vector& max, std::vector<iCollisionGeometry*>& out) override;
     void holdEvents(bool hold) override { m_holdEvents = hold; }
     void deliverEvents() override; // SpaceEvents.cpp
+    bool setContactBudget(size_t maxContacts) override;
+    size_t getContactBudget() const override { return m_budget; }
+    size_t getDroppedPairCount() const override { return m_droppedPairs; }
     void suspend() const override {}
     void release() const override {}
     // Geometries are not deleted: they leave the space (and stay usable). Clears the default space if it
@@ -107,6 +114,12 @@ private:
     void finishNotifications();
     bool queryShapes(iCollisionGeometry* ig, std::vector<gcol::WorldShape>& out);
 
+    // The contact budget (iContactBudget.h): what the last call dropped, and whether that was said.
+    bool full() const { return m_contacts.size() >= m_budget; }
+    size_t m_budget = kDefaultContactBudget;
+    size_t m_droppedPairs = 0;
+    bool m_reportedDrops = false;
+    bool m_cut = false; // the pair being tested lost contacts to the budget
     size_t m_samplesPerSecond;
     std::list<iCollisionGeometry*> m_geometry;
     std::vector<CollisionContact> m_contacts;

@@ -30,8 +30,13 @@ struct SolverBody {
     Vec3 w = Vec3::Zero();
     // What this step's forces added to v and w: the sub-steps add it a share at a time.
     Vec3 dv = Vec3::Zero(), dw = Vec3::Zero();
+    // The sub-step's solved velocities, before the push out (which moves the body but is not kept).
+    Vec3 vSolved = Vec3::Zero(), wSolved = Vec3::Zero();
     float invMass = 0;
     Mat3 invInertia = Mat3::Zero();
+    // Projected out of a deep overlap this step: a correction, not motion, so a collision space must not
+    // sweep along it (the pose is stored as a teleport, RBDynamics::teleports).
+    bool projected = false;
 };
 
 struct ContactPoint {
@@ -48,8 +53,12 @@ struct ContactPoint {
          turnB[3] = {Vec3::Zero(), Vec3::Zero(), Vec3::Zero()};
     float normalMass = 0, tangentMass[2] = {0, 0};
     float normalImpulse = 0, tangentImpulse[2] = {0, 0}; // accumulated, per sub-step
-    float approachSpeed = 0;    // v_n when the solve began (negative: approaching), for restitution
-    float maxNormalImpulse = 0; // over the sub-steps: a point that never pushed does not bounce
+    float solvedImpulse[3] = {0, 0, 0}; // normal and tangent impulses before the sub-step's push out
+    float approachSpeed = 0;            // v_n when the solve began (negative: approaching), for restitution
+    float forceSpeed = 0;               // what this step's forces added to v_n (a_n dt)
+    float touchSpeed2 = 0;              // v_n^2 at the moment the point touched (the energy a bounce returns)
+    float maxNormalImpulse = 0;         // over the sub-steps: a point that never pushed does not bounce
+    bool bounced = false;               // it bounced: it left the surface and is not kept next step
 };
 
 struct Manifold {
@@ -59,6 +68,8 @@ struct Manifold {
     RBDynamics *rootA = nullptr, *rootB = nullptr; // the bodies (nullptr: the static world)
     int age = 0; // steps since the detector last reported the pair (a kept manifold lives one step)
     float friction = 0, restitution = 0;
+    bool bounces = false;  // a point bounces this step: its overlap is projected out entirely
+    float projectable = 0; // how much further its overlap may still be projected out this step
     int count = 0;
     ContactPoint points[4];
 };

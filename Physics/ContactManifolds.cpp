@@ -115,6 +115,7 @@ void ContactSolver::keepPoints(const SolverBodyAccess& access,
         const int reportedCount = m.count;
         for (int j = 0; j < old.count && m.count < 4; ++j) {
             const ContactPoint& o = old.points[j];
+            if (o.bounced) continue; // it left the surface
             bool known = false;
             for (int i = 0; i < reportedCount && !known; ++i)
                 known = (m.points[i].anchorA - o.anchorA).squaredNorm() <= match2;
@@ -169,7 +170,9 @@ void ContactSolver::matchPreviousImpulses() {
                     match = &old.points[j];
                 }
             }
-            if (!match) continue;
+            // A point that bounced left the surface: its impulse was an impact's, not a load to start from
+            // (warm-started, it threw a ball chased by a kinematic paddle back at the paddle).
+            if (!match || match->bounced) continue;
             p.normalImpulse = match->normalImpulse;
             Vec3 friction =
                 match->tangent[0] * match->tangentImpulse[0] + match->tangent[1] * match->tangentImpulse[1];

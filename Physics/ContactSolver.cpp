@@ -1,5 +1,6 @@
 // ContactSolver.cpp - the sub-stepped solve: soft contacts, Coulomb friction, warm starting, restitution.
 #include "ContactSolver.h"
+#include "SolverRows.h"
 
 #include "MathEigen.h"
 #include "RBDynamics.h"
@@ -33,38 +34,6 @@ bool immovable(const RBDynamics& d) {
 }
 
 namespace {
-
-bool movable(const SolverBody& b) { return b.root && b.invMass > 0.0f; }
-
-// Row 0 is the normal, rows 1 and 2 the tangents; the row is a template argument so that the hot loops
-// compile without a branch per impulse.
-template <int Row> const Vec3& direction(const ContactPoint& p) {
-    if constexpr (Row == 0)
-        return p.normal;
-    else
-        return p.tangent[Row - 1];
-}
-
-// The relative velocity of b against a at the point, along a row's direction.
-template <int Row>
-inline float relativeSpeed(const SolverBody& a, const SolverBody& b, const ContactPoint& p) {
-    return direction<Row>(p).dot(b.v - a.v) + p.armB[Row].dot(b.w) - p.armA[Row].dot(a.w);
-}
-
-// An impulse along a row's direction: on b, and its opposite on a.
-template <int Row>
-inline void applyImpulse(SolverBody& a, SolverBody& b, const ContactPoint& p, float impulse) {
-    const Vec3& d = direction<Row>(p);
-    a.v -= (a.invMass * impulse) * d;
-    a.w -= impulse * p.turnA[Row];
-    b.v += (b.invMass * impulse) * d;
-    b.w += impulse * p.turnB[Row];
-}
-
-// Where an anchor is now (the static world's anchors are world points).
-Vec3 worldPoint(const SolverBody& b, const Vec3& anchor) {
-    return b.root ? Vec3(b.rotation * anchor + b.origin) : anchor;
-}
 
 // Moves b by dp and turns it about its centre of mass by the rotation vector dtheta (first order).
 void turnAndMove(SolverBody& b, const Vec3& dp, const Vec3& dtheta) {
@@ -107,6 +76,7 @@ void SolverBodyAccess::storeVelocity(const SolverBody& b) const {
 void SolverBodyAccess::storePose(const SolverBody& b) const {
     b.root->position = toVector(b.origin);
     b.root->orientation = toOrientation(b.rotation);
+    if (b.projected) b.root->markTeleported();
 }
 
 // --- the solve, top to bottom ---
@@ -114,10 +84,12 @@ void ContactSolver::solve(const CollisionContact* contacts, size_t count, float 
                           const SolverBodyAccess& access) {
     buildManifolds(contacts, count, access);
     matchPreviousImpulses();
-    prepare();
+    prepare(dt);
+    orderByLevel();
     startBodies();
     const int n = std::max(1, m_settings.substeps);
     const float h = dt / float(n);
+    m_dt = dt;
     // The soft contact (a damped spring in impulse form, Catto's "Soft Step"): stiff, but never stiffer than
     // a quarter of the sub-step rate can follow.
     const float omega = 2.0f * 3.14159265f * std::min(m_settings.contactHertz, 0.25f / h);
@@ -128,12 +100,17 @@ void ContactSolver::solve(const CollisionContact* contacts, size_t count, float 
     for (int i = 0; i < n; ++i) {
         addForces(1.0f / float(n));
         warmStart(i == 0);
-        solveContacts(h, true);
-        moveBodies(h);
-        solveContacts(h, false); // relax: the push out's velocity is not kept
+        solveContacts(h, false); // the velocities: approach stopped, nothing pushed
+        propagateShock(h);       // what a light body under a heavy one could not stop
+        saveVelocities();
+        solveContacts(h, true);  // the push out, on top
+        moveBodies(h);           // by the velocities plus the push, capped
+        restoreVelocities();     // the push out's velocity is not kept
+        solveContacts(h, false); // relax: the velocities again, at the new poses
     }
-    applyRestitution();
+    findBounces();
     projectDeepOverlaps();
+    applyRestitution();
     for (const SolverBody& b : m_bodies) {
         access.storeVelocity(b);
         if (movable(b)) access.storePose(b);
@@ -142,7 +119,7 @@ void ContactSolver::solve(const CollisionContact* contacts, size_t count, float 
     storeImpulses();
 }
 
-void ContactSolver::prepare() {
+void ContactSolver::prepare(float dt) {
     for (Manifold& m : m_manifolds) {
         const SolverBody &a = m_bodies[m.a], &b = m_bodies[m.b];
         for (int i = 0; i < m.count; ++i) {
@@ -163,6 +140,7 @@ void ContactSolver::prepare() {
             p.tangentMass[1] = masses[2];
             p.approachSpeed = relativeSpeed<0>(a, b, p);
             p.maxNormalImpulse = 0;
+            prepareBounce(a, b, p, dt);
         }
     }
 }
@@ -219,17 +197,21 @@ void ContactSolver::warmStart(bool firstSubstep) {
 //    two passes, 0.001 rad/s and 1 cm.
 // pushOut: overlap is pushed out softly; otherwise (relax) only approach is stopped.
 void ContactSolver::solveContacts(float h, bool pushOut) {
-    for (Manifold& m : m_manifolds) {
+    for (Manifold& m : m_manifolds) solveManifold(m, h, pushOut);
+}
+
+void ContactSolver::solveManifold(Manifold& m, float h, bool pushOut) {
+    {
         // Positions do not change within a sweep: each point's target is worked out once.
         const SolverBody &a = m_bodies[m.a], &b = m_bodies[m.b];
         Target target[4];
         for (int i = 0; i < m.count; ++i) {
             const ContactPoint& p = m.points[i];
-            float separation = p.normal.dot(worldPoint(b, p.anchorB) - worldPoint(a, p.anchorA));
-            if (separation > 0.0f) {
-                target[i].bias = separation / h; // apart: may close the gap within the sub-step, no more
+            float gap = separation(a, b, p);
+            if (gap > 0.0f) {
+                target[i].bias = gap / h; // apart: may close the gap within the sub-step, no more
             } else if (pushOut) {
-                target[i] = {std::max(m_biasRate * separation, -m_settings.maxPushSpeed), m_massScale,
+                target[i] = {std::max(m_biasRate * gap, -m_settings.maxPushSpeed), m_massScale,
                              m_impulseScale};
             }
         }
@@ -269,67 +251,52 @@ void ContactSolver::solveFriction(Manifold& m) {
     }
 }
 
-// Semi-implicit Euler over h: the frame turns about the centre of mass.
-void ContactSolver::moveBodies(float h) {
-    for (SolverBody& b : m_bodies)
-        if (movable(b)) turnAndMove(b, h * b.v, h * b.w);
-}
-
-// A point that approached faster than the threshold and pushed in some sub-step leaves at e times its
-// approach speed (after the sub-steps, so a resting contact never bounces). The bouncing points are swept
-// several times, alternately forward and backward: one sweep over a box's four corners spun a box that
-// landed flat at 4.3 rad/s.
-void ContactSolver::applyRestitution() {
-    const float threshold = -m_settings.restitutionThreshold;
-    m_bouncing.clear();
-    for (size_t k = 0; k < m_manifolds.size(); ++k) {
-        const Manifold& m = m_manifolds[k];
-        for (int i = 0; m.restitution > 0.0f && i < m.count; ++i)
-            if (m.points[i].approachSpeed < threshold && m.points[i].maxNormalImpulse > 0.0f)
-                m_bouncing.push_back({k, i});
+// The velocities the sub-step solved for, and the impulses that produced them, before the push out.
+void ContactSolver::saveVelocities() {
+    for (SolverBody& b : m_bodies) {
+        b.vSolved = b.v;
+        b.wSolved = b.w;
     }
-    for (int sweep = 0; sweep < kRestitutionSweeps && !m_bouncing.empty(); ++sweep) {
-        for (size_t j = 0; j < m_bouncing.size(); ++j) {
-            const auto& [k, i] = m_bouncing[sweep % 2 ? m_bouncing.size() - 1 - j : j];
-            Manifold& m = m_manifolds[k];
+    for (Manifold& m : m_manifolds)
+        for (int i = 0; i < m.count; ++i) {
             ContactPoint& p = m.points[i];
-            SolverBody &a = m_bodies[m.a], &b = m_bodies[m.b];
-            float vn = relativeSpeed<0>(a, b, p);
-            float total =
-                std::max(0.0f, p.normalImpulse - p.normalMass * (vn + m.restitution * p.approachSpeed));
-            applyImpulse<0>(a, b, p, total - p.normalImpulse);
-            p.normalImpulse = total;
+            p.solvedImpulse[0] = p.normalImpulse;
+            p.solvedImpulse[1] = p.tangentImpulse[0];
+            p.solvedImpulse[2] = p.tangentImpulse[1];
         }
-    }
 }
 
-// Overlap deeper than deepOverlap (which resting contacts never reach) comes from a fast body found after it
-// went in: pushed out at a capped speed it would bounce from deep inside and lose height, so it is projected
-// out at once, moving positions only. Each manifold's two bodies are moved apart along the normal by the
-// deepest point's excess, shared by inverse mass; translation alone cannot overshoot the way corner pushes
-// that also turn the body do.
-void ContactSolver::projectDeepOverlaps() {
-    const float allowed = m_settings.deepOverlap;
-    bool moved = true;
-    for (int iteration = 0; moved && iteration < kProjectionIterations; ++iteration) {
-        moved = false;
-        for (Manifold& m : m_manifolds) {
-            SolverBody &a = m_bodies[m.a], &b = m_bodies[m.b];
-            float excess = 0;
-            for (int i = 0; i < m.count; ++i) {
-                const ContactPoint& p = m.points[i];
-                Vec3 gap = worldPoint(b, p.anchorB) - worldPoint(a, p.anchorA);
-                excess = std::max(excess, -p.normal.dot(gap) - allowed);
-            }
-            float invMass = a.invMass + b.invMass;
-            if (excess <= 0.0f || invMass <= 0.0f) continue;
-            moved = true;
-            Vec3 push = m.points[0].normal * (excess / invMass);
-            a.com -= a.invMass * push;
-            a.origin -= a.invMass * push;
-            b.com += b.invMass * push;
-            b.origin += b.invMass * push;
+void ContactSolver::restoreVelocities() {
+    for (SolverBody& b : m_bodies) {
+        b.v = b.vSolved;
+        b.w = b.wSolved;
+    }
+    for (Manifold& m : m_manifolds)
+        for (int i = 0; i < m.count; ++i) {
+            ContactPoint& p = m.points[i];
+            p.normalImpulse = p.solvedImpulse[0];
+            p.tangentImpulse[0] = p.solvedImpulse[1];
+            p.tangentImpulse[1] = p.solvedImpulse[2];
         }
+}
+
+// Semi-implicit Euler over h: the frame turns about the centre of mass. A body moves by its solved velocity
+// plus what the push out added, the push's linear part capped at maxPushSpeed (its turning scaled with it).
+// Each contact caps its own push, but a body pushed by many (a crowd spawned at one point) gathered theirs:
+// a chain of coincident bodies, each pair pushed apart at 3 m/s, spread at 3 m/s per body, and the relax
+// that was to take the push's velocity back converged too slowly to do it (1,000 spheres left at 669 m/s).
+void ContactSolver::moveBodies(float h) {
+    const float cap = m_settings.maxPushSpeed;
+    for (SolverBody& b : m_bodies) {
+        if (!movable(b)) continue;
+        Vec3 push = b.v - b.vSolved, turn = b.w - b.wSolved;
+        const float speed = push.norm();
+        if (speed > cap) {
+            const float scale = cap / speed;
+            push *= scale;
+            turn *= scale;
+        }
+        turnAndMove(b, h * (b.vSolved + push), h * (b.wSolved + turn));
     }
 }
 
@@ -338,8 +305,7 @@ void ContactSolver::measureOverlap() {
     for (const Manifold& m : m_manifolds)
         for (int i = 0; i < m.count; ++i) {
             const ContactPoint& p = m.points[i];
-            Vec3 gap = worldPoint(m_bodies[m.b], p.anchorB) - worldPoint(m_bodies[m.a], p.anchorA);
-            m_maxDepthAfter = std::max(m_maxDepthAfter, -p.normal.dot(gap));
+            m_maxDepthAfter = std::max(m_maxDepthAfter, -separation(m_bodies[m.a], m_bodies[m.b], p));
         }
 }
 

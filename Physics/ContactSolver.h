@@ -6,9 +6,10 @@
 //   sub-steps of h = dt/n: add 1/n of what the forces did to the velocities, re-apply the accumulated
 //   impulses (warm start; an impact's only in the first), solve (per manifold: the normal impulses,
 //   accumulated and clamped >= 0, twice, then two Coulomb friction impulses per point, then the normal
-//   impulses again), move the bodies by h, and relax (solve again without the push out). Last, one
-//   restitution pass bounces the points that approached faster than a threshold, and overlap deeper than any
-//   resting contact reaches (a fast body found late) is projected out.
+//   impulses again), move the bodies by h, and relax (solve again without the push out). Last, overlap
+//   deeper than any resting contact reaches (a fast body found late) is projected out, and the points that
+//   approached faster than a threshold bounce, returning e^2 of the energy the impact brought
+//   (ContactRestitution.cpp).
 // A point's separation is measured anew in every sub-step from its anchors on both bodies. Overlap is pushed
 // out by a soft constraint (a stiff, heavily damped spring at a capped speed) and the relax removes the
 // push's velocity, so no energy is added. There is no slop: a dead band of allowed overlap let a 10-box tower
@@ -101,7 +102,7 @@ private:
     void matchPreviousImpulses();
     void storeImpulses();
     // ContactSolver.cpp
-    void prepare();
+    void prepare(float dt);
     void startBodies();
     void addForces(float share);
     void warmStart(bool firstSubstep);
@@ -110,9 +111,18 @@ private:
         float bias = 0, massScale = 1, impulseScale = 0;
     };
     void solveContacts(float h, bool pushOut);
+    void solveManifold(Manifold& m, float h, bool pushOut);
     void solveNormal(Manifold& m, const Target* target);
     void solveFriction(Manifold& m);
+    void saveVelocities();
     void moveBodies(float h);
+    void restoreVelocities();
+    // ShockPropagation.cpp
+    void orderByLevel();
+    void propagateShock(float h);
+    // ContactRestitution.cpp
+    static void prepareBounce(const SolverBody& a, const SolverBody& b, ContactPoint& p, float dt);
+    void findBounces();
     void applyRestitution();
     void projectDeepOverlaps();
     void measureOverlap();
@@ -124,9 +134,16 @@ private:
     std::vector<Manifold> m_last;      // last step's, in solving order (for warm starting and keeping)
     std::unordered_map<PairKey, size_t, PairKeyHash> m_lastIndex; // into m_last
     float m_maxDepthBefore = 0, m_maxDepthAfter = 0;
+    float m_dt = 0; // the step being solved
     static constexpr int kProjectionIterations = 4;
     static constexpr int kRestitutionSweeps = 8;
+    static constexpr float kBounceGap = 1e-4f;      // m: a bouncing pair is left this far apart
     std::vector<std::pair<size_t, int>> m_bouncing; // (manifold, point) of the points that bounce this step
+    // Shock propagation: each body's contact distance from the immovable world, the manifolds each body is
+    // in, and the manifolds between levels, lowest first, with whether b is the upper body.
+    std::vector<int> m_level;
+    std::vector<std::vector<int>> m_touching;
+    std::vector<std::pair<size_t, bool>> m_shock;
     // The soft contact for the current sub-step length.
     float m_biasRate = 0, m_massScale = 1, m_impulseScale = 0;
 };

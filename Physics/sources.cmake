@@ -6,12 +6,14 @@ set(GUARDIAN_PHYSICS_SOURCES
   FrameDriver.cpp
   ContactManifolds.cpp
   ContactResolution.cpp
+  ContactRestitution.cpp
   ContactSolver.cpp
   Integrators.cpp
   PhysicsFrame.cpp
   PhysicsScene.cpp
   PhysicsSceneContacts.cpp
-  RigidBody.cpp)
+  RigidBody.cpp
+  ShockPropagation.cpp)
 set(GUARDIAN_PHYSICS_HEADERS
   BodyValidation.h
   Composite.h
@@ -19,6 +21,7 @@ set(GUARDIAN_PHYSICS_HEADERS
   ContactManifold.h
   ContactResolution.h
   ContactSolver.h
+  SolverRows.h
   Integrators.h
   MathBridge.h
   PhysicsScene.h

@@ -72,7 +72,7 @@ TEST(Teleport, KeepsVelocity) {
 
 // Landing inside something: the ordinary resolution separates them, no faster than the solver's push-out
 // speed cap (SolverSettings::maxPushSpeed, 3 m/s).
-TEST(Teleport, DISABLED_LandingInsideSeparatesWithinThePushCap) {
+TEST(Teleport, LandingInsideSeparatesWithinThePushCap) {
     SceneFixture s;
     settingsOf(s.scene)->setGravity(Vector());
     s.world->fixedBox(Vector(), Vector(0.5f, 0.5f, 0.5f));
