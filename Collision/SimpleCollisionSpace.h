@@ -20,14 +20,19 @@
 #include "iCollisionQueries.h"
 #include "iCollisionSpace.h"
 #include "iContactFeatures.h"
+#include "iShapeCast.h"
 
 #include <list>
+#include <utility>
 #include <vector>
 
 class iRigidBody;
 class iCollisionListener;
 
-class SimpleCollisionSpace final : public iCollisionSpace, public iCollisionQueries, public iContactFeatures {
+class SimpleCollisionSpace final : public iCollisionSpace,
+                                   public iCollisionQueries,
+                                   public iContactFeatures,
+                                   public iShapeCast {
 public:
     explicit SimpleCollisionSpace(size_t samplesPerSecond);
 
@@ -50,6 +55,7 @@ public:
     size_t overlapBox(const Vector& centre, const Matrix& orientation, const Vector& halfExtents,
                       std::vector<iCollisionGeometry*>& out) override;
     size_t overlapAABB(const Vector& min, const Vector& max, std::vector<iCollisionGeometry*>& out) override;
+    size_t sweepBodies(BodySweep* sweeps, size_t count) override; // SpaceShapeCast.cpp
     void suspend() const override {}
     void release() const override {}
     // Geometries are not deleted: they leave the space (and stay usable). Clears the default space if it
@@ -87,6 +93,19 @@ private:
     void notifyListeners();
     void finishNotifications();
     bool queryShapes(iCollisionGeometry* ig, std::vector<gcol::WorldShape>& out);
+    // SpaceShapeCast.cpp
+    struct CastGeometry {
+        CollisionGeometry* g;
+        int sweep;     // the sweep moving it, or -1
+        Vector origin; // current pose
+        Matrix rotation;
+        gcol::Aabb box;       // current bounds (planes: none)
+        Vector localOrigin;   // a swept one's origin from its root's COM, in the root's axes
+        Matrix localRotation; // and its rotation relative to the root's
+    };
+    void sweepOne(BodySweep& sweep, int index);
+    // Appends to m_moving the shapes of sweep's geometry with its root at (position, row-vector rotation).
+    void castShapesAt(int sweep, const Vector& position, const Matrix& rotation);
 
     size_t m_samplesPerSecond;
     std::list<iCollisionGeometry*> m_geometry;
@@ -105,6 +124,13 @@ private:
     std::vector<Notice> m_notices;
     std::vector<iCollisionListener*> m_listenerSnapshot;
     std::vector<CollisionGeometry*> m_pendingRemove, m_pendingDelete;
+    // Shape cast scratch.
+    std::vector<CastGeometry> m_cast;
+    std::vector<std::pair<const void*, int>> m_sweepIndex; // (root dynamics, sweep), sorted
+    std::vector<std::pair<int, int>> m_sweepRange;         // each sweep's geometry in m_cast: [first, last)
+    std::vector<gcol::WorldShape> m_moving, m_obstacles;
+    std::vector<int> m_obstacleOwner;     // m_cast index of each obstacle shape
+    std::vector<unsigned char> m_ignored; // moving x obstacle pairs touching at the start
     bool m_notifying = false;
     bool m_populating = false;
 };

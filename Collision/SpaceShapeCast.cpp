@@ -1,0 +1,202 @@
+// SpaceShapeCast.cpp - the simple space's shape cast (iShapeCast.h): time of impact of a moved body's
+// geometry against every other geometry, by conservative advancement.
+//
+// Conservative advancement (Mirtich; Box2D's time of impact works the same way with a tighter distance):
+// with g a lower bound on the distance between the moving shapes and the obstacles at fraction t
+// (separationBound), and S an upper bound on how far any point of the moving body travels over the whole
+// motion (|dP| + angle * reach, reach = the farthest point from its centre of mass), nothing can touch before
+// t + g / S; advance there and repeat until g <= kTolerance. Each advance is safe, so no obstacle is ever
+// stepped over, whatever its thickness or the speed: the guarantee holds along the interpolated path (COM
+// linear, orientation slerp), against obstacles held at their current pose. Face-on approaches converge in
+// one or two advances; a turning body or an edge-on box pair in more, up to kMaxIterations, after which the
+// body is stopped where it is (short of the obstacle: safe, never through).
+// Cost: one pass over the geometry to find the swept bodies' geometry; then, only for a body that moved more
+// than a quarter of a shape's smallest dimension, its shapes against the obstacles in its swept bounds, a few
+// times.
+#include "MathEigen.h"
+#include "SimpleCollisionSpace.h"
+#include "iRigidBody.h"
+#include "iUtilities.h"
+
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <cmath>
+
+namespace {
+
+using Vec3 = Eigen::Vector3f;
+using Mat3 = Eigen::Matrix3f;
+using Quat = Eigen::Quaternionf;
+
+constexpr float kTolerance = 1e-4f; // m: a gap this small is a touch (and a pair this close at the start is
+                                    // touching: contact resolution has it)
+constexpr float kSkin = 2e-4f;      // m: how far past the touch the body is left, so that contact detection
+                                    // sees the pair; under half of the thinnest wall we promise (1 mm)
+constexpr int kMaxIterations = 32;
+
+Vec3 eigen(const Vector& v) { return Vec3(v.x, v.y, v.z); }
+Vector vec(const Vec3& v) { return Vector(v.x(), v.y(), v.z()); }
+Quat quatOf(const Matrix& rowRotation) {
+    return Quat(Mat3(gmath::block3(rowRotation).transpose())).normalized();
+}
+
+bool overlaps(const gcol::Aabb& a, const Vec3& lo, const Vec3& hi) {
+    return a.min.x <= hi.x() && a.max.x >= lo.x() && a.min.y <= hi.y() && a.max.y >= lo.y() &&
+           a.min.z <= hi.z() && a.max.z >= lo.z();
+}
+
+} // namespace
+
+size_t SimpleCollisionSpace::sweepBodies(BodySweep* sweeps, size_t count) {
+    if (m_notifying || m_populating) {
+        error(L"iShapeCast::sweepBodies: called from inside a listener; ignored");
+        return 0;
+    }
+    if (!sweeps || count == 0) return 0;
+    m_sweepIndex.clear();
+    for (size_t i = 0; i < count; ++i) {
+        sweeps[i].fraction = 1.0f;
+        sweeps[i].hit = nullptr;
+        if (sweeps[i].body) m_sweepIndex.emplace_back(&sweeps[i].body->getDynamics(), int(i));
+    }
+    std::sort(m_sweepIndex.begin(), m_sweepIndex.end());
+    // Every geometry that takes part, at its current pose, and which sweep (if any) moves it.
+    m_cast.clear();
+    for (iCollisionGeometry* o : m_geometry) {
+        CastGeometry c;
+        c.g = CollisionGeometry::from(o);
+        if (!c.g->body() && !c.g->isPlane()) continue;
+        if (!c.g->currentPose(c.origin, c.rotation)) continue;
+        c.sweep = -1;
+        if (c.g->body()) {
+            const void* root = c.g->body()->getDynamics().attachmentRoot();
+            auto it = std::lower_bound(m_sweepIndex.begin(), m_sweepIndex.end(), std::make_pair(root, -1));
+            if (it != m_sweepIndex.end() && it->first == root) c.sweep = it->second;
+        }
+        m_cast.push_back(c);
+    }
+    // Grouped by sweep (in space order within a group): each sweep finds its own geometry in one range.
+    std::stable_sort(m_cast.begin(), m_cast.end(),
+                     [](const CastGeometry& a, const CastGeometry& b) { return a.sweep < b.sweep; });
+    m_sweepRange.assign(count, std::make_pair(0, 0));
+    for (size_t j = m_cast.size(); j-- > 0;) {
+        if (m_cast[j].sweep < 0) break;
+        auto& r = m_sweepRange[size_t(m_cast[j].sweep)];
+        if (r.second == 0) r.second = int(j) + 1;
+        r.first = int(j);
+    }
+    size_t hits = 0;
+    for (size_t i = 0; i < count; ++i) {
+        if (!sweeps[i].body) continue;
+        sweepOne(sweeps[i], int(i));
+        if (sweeps[i].hit) ++hits;
+    }
+    return hits;
+}
+
+void SimpleCollisionSpace::castShapesAt(int sweep, const Vector& position, const Matrix& rotation) {
+    const Mat3 r = gmath::block3(rotation).transpose();
+    for (int j = m_sweepRange[size_t(sweep)].first; j < m_sweepRange[size_t(sweep)].second; ++j) {
+        const CastGeometry& c = m_cast[size_t(j)];
+        if (c.g->isPlane()) continue;
+        Vector origin = vec(eigen(position) + r * eigen(c.localOrigin));
+        Matrix rot = gmath::fromBlock3((r * gmath::block3(c.localRotation).transpose()).transpose());
+        c.g->worldShapes(origin, rot, m_moving);
+    }
+}
+
+void SimpleCollisionSpace::sweepOne(BodySweep& sweep, int index) {
+    const RBDynamics& d = sweep.body->getDynamics();
+    const Vec3 p0 = eigen(sweep.startPosition), p1 = eigen(d.position);
+    const Quat q0 = quatOf(sweep.startOrientation), q1 = quatOf(d.orientation);
+    if (!p0.allFinite() || !p1.allFinite() || !q0.coeffs().allFinite() || !q1.coeffs().allFinite()) return;
+    const float angle = q0.angularDistance(q1);
+    const Mat3 r1 = q1.toRotationMatrix();
+    // Each geometry's pose in the root's frame; how far the farthest point is from the COM; whether any
+    // geometry moved far enough to pass through something (the same test the space's sampling uses).
+    float reach = 0.0f, minDim = 3.4e38f;
+    bool fast = false;
+    for (int j = m_sweepRange[size_t(index)].first; j < m_sweepRange[size_t(index)].second; ++j) {
+        CastGeometry& c = m_cast[size_t(j)];
+        if (c.g->isPlane()) continue;
+        const Vec3 offset = r1.transpose() * (eigen(c.origin) - p1);
+        c.localOrigin = vec(offset);
+        c.localRotation =
+            gmath::fromBlock3((r1.transpose() * gmath::block3(c.rotation).transpose()).transpose());
+        const float bound = c.g->asInterface()->getBoundingRadius();
+        reach = std::max(reach, offset.norm() + bound);
+        const float moved = (eigen(c.origin) - (p0 + q0 * offset)).norm() + angle * bound;
+        minDim = std::min(minDim, c.g->minDimension());
+        if (moved > 0.25f * c.g->minDimension()) fast = true;
+    }
+    if (!fast) return;
+    const float travel = (p1 - p0).norm() + angle * reach; // no point moves farther over the motion
+    if (!(travel > 0.0f) || !std::isfinite(travel)) return;
+    // Obstacles: the other geometry within the swept bounds (planes are unbounded: always).
+    const Vec3 lo = p0.cwiseMin(p1) - Vec3::Constant(reach), hi = p0.cwiseMax(p1) + Vec3::Constant(reach);
+    m_obstacles.clear();
+    m_obstacleOwner.clear();
+    for (size_t j = 0; j < m_cast.size(); ++j) {
+        CastGeometry& c = m_cast[j];
+        if (c.sweep == index) continue;
+        size_t before = m_obstacles.size();
+        c.g->worldShapes(c.origin, c.rotation, m_obstacles);
+        bool keep = c.g->isPlane();
+        for (size_t k = before; k < m_obstacles.size() && !keep; ++k) {
+            gcol::Aabb box;
+            gcol::shapeAabb(m_obstacles[k], box);
+            keep = overlaps(box, lo, hi);
+        }
+        if (!keep) {
+            m_obstacles.resize(before);
+            continue;
+        }
+        m_obstacleOwner.resize(m_obstacles.size(), int(j));
+    }
+    if (m_obstacles.empty()) return;
+    m_moving.clear();
+    castShapesAt(index, sweep.startPosition, sweep.startOrientation);
+    const size_t nm = m_moving.size(), no = m_obstacles.size();
+    m_ignored.assign(nm * no, 0);
+    float t = 0.0f, gap = 0.0f;
+    int hit = -1;
+    Vector axis;
+    for (int iteration = 0;; ++iteration) {
+        gap = 3.4e38f;
+        hit = -1;
+        for (size_t i = 0; i < nm; ++i)
+            for (size_t j = 0; j < no; ++j) {
+                if (m_ignored[i * no + j]) continue;
+                Vector a;
+                float s = gcol::separationBound(m_moving[i], m_obstacles[j], a);
+                if (iteration == 0 && s <= kTolerance) { // touching at the start: contact resolution's
+                    m_ignored[i * no + j] = 1;
+                    continue;
+                }
+                if (s < gap) {
+                    gap = s;
+                    hit = int(j);
+                    axis = a;
+                }
+            }
+        if (hit < 0) return;
+        if (gap <= kTolerance) break;
+        if (iteration == kMaxIterations) { // slow convergence: stop here, short of the obstacle
+            gap = -kSkin;
+            break;
+        }
+        t += gap / travel;
+        if (t >= 1.0f) return;
+        m_moving.clear();
+        Matrix rot = gmath::fromBlock3(Mat3(q0.slerp(t, q1).toRotationMatrix()).transpose());
+        castShapesAt(index, vec(p0 + (p1 - p0) * t), rot);
+    }
+    // A hair past the touch along the approach, so the pair overlaps by about kSkin; never more than a tenth
+    // of the body's smallest dimension further (a grazing approach).
+    const float approach = dot(vec(p1 - p0), axis);
+    float extra = approach > 0.0f ? (gap + kSkin) / approach : 0.0f;
+    extra = std::max(0.0f, std::min(extra, 0.1f * minDim / travel));
+    sweep.fraction = std::min(1.0f, t + extra);
+    sweep.hit = m_cast[size_t(m_obstacleOwner[size_t(hit)])].g->asInterface();
+}
