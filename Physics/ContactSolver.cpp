@@ -228,6 +228,10 @@ void ContactSolver::solveContacts(float h, bool pushOut) {
             float separation = p.normal.dot(worldPoint(b, p.anchorB) - worldPoint(a, p.anchorA));
             if (separation > 0.0f) {
                 target[i].bias = separation / h; // apart: may close the gap within the sub-step, no more
+            } else if (separation > -m_settings.touchOverlap &&
+                       relativeSpeed<0>(a, b, p) < -m_settings.restitutionThreshold) {
+                // An impact at a touch (where the continuous stage leaves a fast body) is stopped rigidly:
+                // a soft stop lets a few % of the approach through, metres in a sub-step at 10^4 m/s.
             } else if (pushOut) {
                 target[i] = {std::max(m_biasRate * separation, -m_settings.maxPushSpeed), m_massScale,
                              m_impulseScale};

@@ -6,6 +6,7 @@ set(GUARDIAN_PHYSICS_SOURCES
   ContactManifolds.cpp
   ContactResolution.cpp
   ContactSolver.cpp
+  ContinuousStage.cpp
   Integrators.cpp
   PhysicsFrame.cpp
   PhysicsScene.cpp
@@ -18,6 +19,7 @@ set(GUARDIAN_PHYSICS_HEADERS
   ContactManifold.h
   ContactResolution.h
   ContactSolver.h
+  ContinuousStage.h
   Integrators.h
   MathBridge.h
   PhysicsScene.h
