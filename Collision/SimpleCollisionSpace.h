@@ -96,10 +96,10 @@ private:
     // SpaceShapeCast.cpp
     struct CastGeometry {
         CollisionGeometry* g;
-        int sweep;     // the sweep moving it, or -1
+        int sweep;     // the sweep moving it, or -1 (-2: its pose is not finite)
+        bool posed;    // origin and rotation are read
         Vector origin; // current pose
         Matrix rotation;
-        gcol::Aabb box;       // current bounds (planes: none)
         Vector localOrigin;   // a swept one's origin from its root's COM, in the root's axes
         Matrix localRotation; // and its rotation relative to the root's
     };
@@ -127,7 +127,8 @@ private:
     // Shape cast scratch.
     std::vector<CastGeometry> m_cast;
     std::vector<std::pair<const void*, int>> m_sweepIndex; // (root dynamics, sweep), sorted
-    std::vector<std::pair<int, int>> m_sweepRange;         // each sweep's geometry in m_cast: [first, last)
+    std::vector<int> m_castOrder;                          // m_cast indices grouped by sweep
+    std::vector<std::pair<int, int>> m_sweepRange;         // each sweep's range in m_castOrder
     std::vector<gcol::WorldShape> m_moving, m_obstacles;
     std::vector<int> m_obstacleOwner;     // m_cast index of each obstacle shape
     std::vector<unsigned char> m_ignored; // moving x obstacle pairs touching at the start

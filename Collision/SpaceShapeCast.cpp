@@ -34,6 +34,7 @@ constexpr float kTolerance = 1e-4f; // m: a gap this small is a touch (and a pai
 constexpr float kSkin = 2e-4f;      // m: how far past the touch the body is left, so that contact detection
                                     // sees the pair; under half of the thinnest wall we promise (1 mm)
 constexpr int kMaxIterations = 32;
+constexpr int kUnusable = -2; // a geometry whose body's pose is not finite
 
 Vec3 eigen(const Vector& v) { return Vec3(v.x, v.y, v.z); }
 Vector vec(const Vec3& v) { return Vector(v.x(), v.y(), v.z()); }
@@ -61,31 +62,41 @@ size_t SimpleCollisionSpace::sweepBodies(BodySweep* sweeps, size_t count) {
         if (sweeps[i].body) m_sweepIndex.emplace_back(&sweeps[i].body->getDynamics(), int(i));
     }
     std::sort(m_sweepIndex.begin(), m_sweepIndex.end());
-    // Every geometry that takes part, at its current pose, and which sweep (if any) moves it.
+    // Every geometry that takes part and which sweep (if any) moves it. Poses are read now only for the
+    // swept ones; an obstacle's only when some body turns out fast (most steps: none).
     m_cast.clear();
+    std::vector<int>& perSweep = m_castOrder; // first used as a count per sweep
+    perSweep.assign(count + 1, 0);
     for (iCollisionGeometry* o : m_geometry) {
         CastGeometry c;
         c.g = CollisionGeometry::from(o);
-        if (!c.g->body() && !c.g->isPlane()) continue;
-        if (!c.g->currentPose(c.origin, c.rotation)) continue;
         c.sweep = -1;
-        if (c.g->body()) {
+        c.posed = false;
+        if (!c.g->body()) {
+            if (!c.g->isPlane()) continue;
+        } else {
             const void* root = c.g->body()->getDynamics().attachmentRoot();
             auto it = std::lower_bound(m_sweepIndex.begin(), m_sweepIndex.end(), std::make_pair(root, -1));
-            if (it != m_sweepIndex.end() && it->first == root) c.sweep = it->second;
+            if (it != m_sweepIndex.end() && it->first == root) {
+                if (!c.g->currentPose(c.origin, c.rotation)) continue;
+                c.sweep = it->second;
+                c.posed = true;
+                ++perSweep[size_t(c.sweep)];
+            }
         }
         m_cast.push_back(c);
     }
-    // Grouped by sweep (in space order within a group): each sweep finds its own geometry in one range.
-    std::stable_sort(m_cast.begin(), m_cast.end(),
-                     [](const CastGeometry& a, const CastGeometry& b) { return a.sweep < b.sweep; });
-    m_sweepRange.assign(count, std::make_pair(0, 0));
-    for (size_t j = m_cast.size(); j-- > 0;) {
-        if (m_cast[j].sweep < 0) break;
-        auto& r = m_sweepRange[size_t(m_cast[j].sweep)];
-        if (r.second == 0) r.second = int(j) + 1;
-        r.first = int(j);
+    // Each sweep's geometry as one range of m_castOrder (a counting sort, in space order within a sweep).
+    m_sweepRange.resize(count);
+    int next = 0;
+    for (size_t i = 0; i < count; ++i) {
+        m_sweepRange[i] = std::make_pair(next, next);
+        next += perSweep[i];
     }
+    m_castOrder.assign(size_t(next), 0);
+    for (size_t j = 0; j < m_cast.size(); ++j)
+        if (m_cast[j].sweep >= 0)
+            m_castOrder[size_t(m_sweepRange[size_t(m_cast[j].sweep)].second++)] = int(j);
     size_t hits = 0;
     for (size_t i = 0; i < count; ++i) {
         if (!sweeps[i].body) continue;
@@ -98,7 +109,7 @@ size_t SimpleCollisionSpace::sweepBodies(BodySweep* sweeps, size_t count) {
 void SimpleCollisionSpace::castShapesAt(int sweep, const Vector& position, const Matrix& rotation) {
     const Mat3 r = gmath::block3(rotation).transpose();
     for (int j = m_sweepRange[size_t(sweep)].first; j < m_sweepRange[size_t(sweep)].second; ++j) {
-        const CastGeometry& c = m_cast[size_t(j)];
+        const CastGeometry& c = m_cast[size_t(m_castOrder[size_t(j)])];
         if (c.g->isPlane()) continue;
         Vector origin = vec(eigen(position) + r * eigen(c.localOrigin));
         Matrix rot = gmath::fromBlock3((r * gmath::block3(c.localRotation).transpose()).transpose());
@@ -112,25 +123,32 @@ void SimpleCollisionSpace::sweepOne(BodySweep& sweep, int index) {
     const Quat q0 = quatOf(sweep.startOrientation), q1 = quatOf(d.orientation);
     if (!p0.allFinite() || !p1.allFinite() || !q0.coeffs().allFinite() || !q1.coeffs().allFinite()) return;
     const float angle = q0.angularDistance(q1);
-    const Mat3 r1 = q1.toRotationMatrix();
-    // Each geometry's pose in the root's frame; how far the farthest point is from the COM; whether any
-    // geometry moved far enough to pass through something (the same test the space's sampling uses).
-    float reach = 0.0f, minDim = 3.4e38f;
+    // Whether any geometry moved far enough to pass through something (the test the space's sampling uses).
     bool fast = false;
-    for (int j = m_sweepRange[size_t(index)].first; j < m_sweepRange[size_t(index)].second; ++j) {
-        CastGeometry& c = m_cast[size_t(j)];
+    const Vec3 dp = p1 - p0;
+    const std::pair<int, int> range = m_sweepRange[size_t(index)];
+    for (int j = range.first; j < range.second && !fast; ++j) {
+        const CastGeometry& c = m_cast[size_t(m_castOrder[size_t(j)])];
+        if (c.g->isPlane()) continue;
+        // The geometry's origin moved by dp plus the turn of its arm from the COM, at most angle * arm.
+        const float arm = (eigen(c.origin) - p1).norm();
+        const float moved = dp.norm() + angle * (arm + c.g->asInterface()->getBoundingRadius());
+        fast = moved > 0.25f * c.g->minDimension();
+    }
+    if (!fast) return;
+    // Each geometry's pose in the root's frame, and how far the farthest point is from the COM.
+    const Mat3 r1 = q1.toRotationMatrix();
+    float reach = 0.0f, minDim = 3.4e38f;
+    for (int j = range.first; j < range.second; ++j) {
+        CastGeometry& c = m_cast[size_t(m_castOrder[size_t(j)])];
         if (c.g->isPlane()) continue;
         const Vec3 offset = r1.transpose() * (eigen(c.origin) - p1);
         c.localOrigin = vec(offset);
         c.localRotation =
             gmath::fromBlock3((r1.transpose() * gmath::block3(c.rotation).transpose()).transpose());
-        const float bound = c.g->asInterface()->getBoundingRadius();
-        reach = std::max(reach, offset.norm() + bound);
-        const float moved = (eigen(c.origin) - (p0 + q0 * offset)).norm() + angle * bound;
+        reach = std::max(reach, offset.norm() + c.g->asInterface()->getBoundingRadius());
         minDim = std::min(minDim, c.g->minDimension());
-        if (moved > 0.25f * c.g->minDimension()) fast = true;
     }
-    if (!fast) return;
     const float travel = (p1 - p0).norm() + angle * reach; // no point moves farther over the motion
     if (!(travel > 0.0f) || !std::isfinite(travel)) return;
     // Obstacles: the other geometry within the swept bounds (planes are unbounded: always).
@@ -140,6 +158,16 @@ void SimpleCollisionSpace::sweepOne(BodySweep& sweep, int index) {
     for (size_t j = 0; j < m_cast.size(); ++j) {
         CastGeometry& c = m_cast[j];
         if (c.sweep == index) continue;
+        if (!c.posed) { // read once, for the first fast body that needs it
+            c.posed = true;
+            if (!c.g->currentPose(c.origin, c.rotation)) c.sweep = kUnusable;
+        }
+        if (c.sweep == kUnusable) continue;
+        if (!c.g->isPlane()) { // its bounding sphere against the swept bounds first: most are far
+            const Vec3 o = eigen(c.origin), nearest = o.cwiseMax(lo).cwiseMin(hi);
+            const float r = c.g->asInterface()->getBoundingRadius();
+            if ((o - nearest).squaredNorm() > r * r) continue;
+        }
         size_t before = m_obstacles.size();
         c.g->worldShapes(c.origin, c.rotation, m_obstacles);
         bool keep = c.g->isPlane();
