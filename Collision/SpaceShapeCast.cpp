@@ -2,14 +2,16 @@
 // geometry against every other geometry, by conservative advancement.
 //
 // Conservative advancement (Mirtich; Box2D's time of impact works the same way with a tighter distance):
-// with g a lower bound on the distance between the moving shapes and the obstacles at fraction t
-// (separationBound), and S an upper bound on how far any point of the moving body travels over the whole
-// motion (|dP| + angle * reach, reach = the farthest point from its centre of mass), nothing can touch before
-// t + g / S; advance there and repeat until g <= kTolerance. Each advance is safe, so no obstacle is ever
-// stepped over, whatever its thickness or the speed: the guarantee holds along the interpolated path (COM
-// linear, orientation slerp), against obstacles held at their current pose. Face-on approaches converge in
-// one or two advances; a turning body or an edge-on box pair in more, up to kMaxIterations, after which the
-// body is stopped where it is (short of the obstacle: safe, never through).
+// each shape pair's separationBound is a gap g along a unit axis a that separates them (for spheres and a
+// sphere against a box, the true distance). Along a fixed axis the gap closes no faster than the motion's
+// component on a plus how far turning can carry any point (angle * reach, reach = the farthest point from
+// the centre of mass), so nothing touches before t + g / closing for every pair; advance to the smallest and
+// repeat until a pair is within kTolerance. Each advance is safe, so no obstacle is ever stepped over,
+// whatever its thickness or the speed: the guarantee holds along the interpolated path (COM linear,
+// orientation slerp), against obstacles held at their current pose. Face-on approaches converge in one or
+// two advances; a turning body or an edge-on box pair in more, up to kMaxIterations, after which the body is
+// stopped where it is (short of the obstacle: safe, never through). A pair moving apart along its axis
+// without turning (sliding along a floor it hovers over) is never a hit.
 // Cost: one pass over the geometry to find the swept bodies' geometry; then, only for a body that moved more
 // than a quarter of a shape's smallest dimension, its shapes against the obstacles in its swept bounds, a few
 // times.
@@ -187,13 +189,14 @@ void SimpleCollisionSpace::sweepOne(BodySweep& sweep, int index) {
     castShapesAt(index, sweep.startPosition, sweep.startOrientation);
     const size_t nm = m_moving.size(), no = m_obstacles.size();
     m_ignored.assign(nm * no, 0);
+    const float turn = angle * reach; // how far turning can carry any point over the whole motion
     float t = 0.0f, gap = 0.0f;
     int hit = -1;
     Vector axis;
-    for (int iteration = 0;; ++iteration) {
-        gap = 3.4e38f;
-        hit = -1;
-        for (size_t i = 0; i < nm; ++i)
+    for (int iteration = 0; hit < 0; ++iteration) {
+        float advance = 3.4e38f; // the largest safe step, as a fraction of the motion
+        int nearest = -1;
+        for (size_t i = 0; i < nm && hit < 0; ++i)
             for (size_t j = 0; j < no; ++j) {
                 if (m_ignored[i * no + j]) continue;
                 Vector a;
@@ -202,27 +205,39 @@ void SimpleCollisionSpace::sweepOne(BodySweep& sweep, int index) {
                     m_ignored[i * no + j] = 1;
                     continue;
                 }
-                if (s < gap) {
-                    gap = s;
+                // The gap along a closes no faster than the motion along a plus the turn; a pair moving
+                // apart along a without turning never touches.
+                const float closing = std::max(0.0f, dot(vec(dp), a)) + turn;
+                if (!(closing > 0.0f)) continue;
+                if (s <= kTolerance) {
                     hit = int(j);
+                    gap = s;
+                    axis = a;
+                    break;
+                }
+                if (s / closing < advance) {
+                    advance = s / closing;
+                    nearest = int(j);
+                    gap = s;
                     axis = a;
                 }
             }
-        if (hit < 0) return;
-        if (gap <= kTolerance) break;
+        if (hit >= 0) break;
+        if (nearest < 0) return;           // nothing it can reach
         if (iteration == kMaxIterations) { // slow convergence: stop here, short of the obstacle
+            hit = nearest;
             gap = -kSkin;
             break;
         }
-        t += gap / travel;
+        t += advance;
         if (t >= 1.0f) return;
         m_moving.clear();
         Matrix rot = gmath::fromBlock3(Mat3(q0.slerp(t, q1).toRotationMatrix()).transpose());
-        castShapesAt(index, vec(p0 + (p1 - p0) * t), rot);
+        castShapesAt(index, vec(p0 + dp * t), rot);
     }
     // A hair past the touch along the approach, so the pair overlaps by about kSkin; never more than a tenth
     // of the body's smallest dimension further (a grazing approach).
-    const float approach = dot(vec(p1 - p0), axis);
+    const float approach = dot(vec(dp), axis);
     float extra = approach > 0.0f ? (gap + kSkin) / approach : 0.0f;
     extra = std::max(0.0f, std::min(extra, 0.1f * minDim / travel));
     sweep.fraction = std::min(1.0f, t + extra);

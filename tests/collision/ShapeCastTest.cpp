@@ -133,3 +133,17 @@ TEST(ShapeCast, SlowBodiesAndPairsTouchingAtTheStartAreLeftToContacts) {
     EXPECT_EQ(s.fraction, 1.0f);
     EXPECT_EQ(s.hit, nullptr);
 }
+
+TEST(ShapeCast, ABoxSkimmingAFloorLandsWhenItsDescentClosesTheGap) {
+    // A 0.2 m cube 2 mm above a floor box moves 5 m along it while sinking 4 mm: its bottom face meets the
+    // floor half-way (t = 2 mm / 4 mm), however long the slide; it is left at most 0.1 of its size further.
+    Fixture f;
+    UserBody floor(Vector(0, -0.5f, 0), PHYS_FixedInSpace);
+    f.shapes.push_back(CreateCOBB(&floor, Vector(50, 0.5f, 50)));
+    UserBody cube(Vector(5, 0.098f, 0));
+    f.shapes.push_back(CreateCOBB(&cube, Vector(0.1f, 0.1f, 0.1f)));
+    BodySweep s = f.sweep(cube, Vector(0, 0.102f, 0));
+    ASSERT_EQ(s.hit, f.shapes[0]);
+    EXPECT_GE(s.fraction, 0.5f - 1e-4f);
+    EXPECT_LE(s.fraction, 0.5f + 0.1f * 0.2f / 5.0f + 1e-4f);
+}
