@@ -214,3 +214,29 @@ TEST(Tunnelling, TheStageCanBeTurnedOff) {
     EXPECT_TRUE(shoot(Shape::Sphere, 0.001f, 1000.0f, 0.5f, false, 0.5f, false).passed);
     EXPECT_FALSE(shoot(Shape::Sphere, 0.001f, 1000.0f, 0.5f, false, 0.5f, true).passed);
 }
+
+TEST(Tunnelling, AnAttachmentChainIsSweptAsOneBody) {
+    // A 0.05 m sphere with a 0.1 m box attached 0.15 m ahead of it, shot at a 1 mm wall: the box (the
+    // attached part) leads and is swept with its root; it never crosses the wall and the chain comes back.
+    // Not asserted: the rebound. The solver's sequential impulses on the box's four corners set the chain
+    // turning (measured 1.9 rad/s at 100 m/s, 19 rad/s at 1,000 m/s), so it leaves at 0.46 to 0.53 v, not
+    // e v; and the part's face went 2.0 mm in at 100 m/s (a lone cube: 0.2 mm).
+    for (float v : {100.0f, 1000.0f, 10000.0f})
+        for (float phase : phases(20)) {
+            SceneFixture f(4);
+            settingsOf(f.scene)->setGravity(Vector(0, 0, 0));
+            f.world->fixedBox(Vector(0.0005f, 0, 0), Vector(0.0005f, 1, 1))->getDynamics()->restitution =
+                0.5f;
+            const float start = -0.2f - v * kDt * (2.0f + phase);
+            RBDynamics* root = f.world->sphere(Vector(start, 0, 0), 0.05f, 1.0f)->getDynamics();
+            RBDynamics* part =
+                f.world->box(Vector(start + 0.15f, 0, 0), Vector(0.05f, 0.05f, 0.05f), 1.0f)->getDynamics();
+            part->attachTo(root);
+            root->restitution = part->restitution = 0.5f;
+            root->velocity = Vector(v, 0, 0);
+            bool passed = false;
+            f.steps(8, [&] { passed = passed || part->getWorldPosition().x > 0.0005f; });
+            EXPECT_FALSE(passed) << v << " m/s, phase " << phase;
+            EXPECT_LT(root->velocity.x, -0.4f * v) << v << " m/s, phase " << phase;
+        }
+}
