@@ -131,6 +131,8 @@ private:
     std::vector<std::pair<int, int>> m_sweepRange;         // each sweep's range in m_castOrder
     std::vector<gcol::WorldShape> m_moving, m_obstacles;
     std::vector<int> m_obstacleOwner;     // m_cast index of each obstacle shape
+    std::vector<Vector> m_obstacleShift;  // how far it moves over the motion (another swept body's)
+    std::vector<Vector> m_sweepShift;     // each sweep's translation
     std::vector<unsigned char> m_ignored; // moving x obstacle pairs touching at the start
     bool m_notifying = false;
     bool m_populating = false;

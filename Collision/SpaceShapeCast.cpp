@@ -8,10 +8,11 @@
 // the centre of mass), so nothing touches before t + g / closing for every pair; advance to the smallest and
 // repeat until a pair is within kTolerance. Each advance is safe, so no obstacle is ever stepped over,
 // whatever its thickness or the speed: the guarantee holds along the interpolated path (COM linear,
-// orientation slerp), against obstacles held at their current pose. Face-on approaches converge in one or
-// two advances; a turning body or an edge-on box pair in more, up to kMaxIterations, after which the body is
-// stopped where it is (short of the obstacle: safe, never through). A pair moving apart along its axis
-// without turning (sliding along a floor it hovers over) is never a hit.
+// orientation slerp), against obstacles at their current pose, or moving along their own body's
+// translation when that body is swept too (the pair's closing speed then uses the relative motion). Face-on
+// approaches converge in one or two advances; a turning body or an edge-on box pair in more, up to
+// kMaxIterations, after which the body is stopped where it is (short of the obstacle: safe, never through). A
+// pair moving apart along its axis without turning (sliding along a floor it hovers over) is never a hit.
 // Cost: one pass over the geometry to find the swept bodies' geometry; then, only for a body that moved more
 // than a quarter of a shape's smallest dimension, its shapes against the obstacles in its swept bounds, a few
 // times.
@@ -47,6 +48,14 @@ Quat quatOf(const Matrix& rowRotation) {
 bool overlaps(const gcol::Aabb& a, const Vec3& lo, const Vec3& hi) {
     return a.min.x <= hi.x() && a.max.x >= lo.x() && a.min.y <= hi.y() && a.max.y >= lo.y() &&
            a.min.z <= hi.z() && a.max.z >= lo.z();
+}
+
+// s moved by d.
+gcol::WorldShape shifted(gcol::WorldShape s, const Vector& d) {
+    s.sphere.centre += d;
+    s.box.centre += d;
+    s.plane.offset += dot(s.plane.normal, d);
+    return s;
 }
 
 } // namespace
@@ -99,6 +108,11 @@ size_t SimpleCollisionSpace::sweepBodies(BodySweep* sweeps, size_t count) {
     for (size_t j = 0; j < m_cast.size(); ++j)
         if (m_cast[j].sweep >= 0)
             m_castOrder[size_t(m_sweepRange[size_t(m_cast[j].sweep)].second++)] = int(j);
+    // Each swept body's translation: other bodies' geometry is an obstacle moving that way over the motion.
+    m_sweepShift.resize(count);
+    for (size_t i = 0; i < count; ++i)
+        m_sweepShift[i] =
+            sweeps[i].body ? sweeps[i].body->getDynamics().position - sweeps[i].startPosition : Vector();
     size_t hits = 0;
     for (size_t i = 0; i < count; ++i) {
         if (!sweeps[i].body) continue;
@@ -157,6 +171,7 @@ void SimpleCollisionSpace::sweepOne(BodySweep& sweep, int index) {
     const Vec3 lo = p0.cwiseMin(p1) - Vec3::Constant(reach), hi = p0.cwiseMax(p1) + Vec3::Constant(reach);
     m_obstacles.clear();
     m_obstacleOwner.clear();
+    m_obstacleShift.clear();
     for (size_t j = 0; j < m_cast.size(); ++j) {
         CastGeometry& c = m_cast[j];
         if (c.sweep == index) continue;
@@ -165,9 +180,12 @@ void SimpleCollisionSpace::sweepOne(BodySweep& sweep, int index) {
             if (!c.g->currentPose(c.origin, c.rotation)) c.sweep = kUnusable;
         }
         if (c.sweep == kUnusable) continue;
+        // Another swept body's geometry moves from its start (current pose - shift) to its current pose.
+        const Vector shift = c.sweep >= 0 ? m_sweepShift[size_t(c.sweep)] : Vector();
+        const Vec3 half = 0.5f * eigen(shift);
         if (!c.g->isPlane()) { // its bounding sphere against the swept bounds first: most are far
-            const Vec3 o = eigen(c.origin), nearest = o.cwiseMax(lo).cwiseMin(hi);
-            const float r = c.g->asInterface()->getBoundingRadius();
+            const Vec3 o = eigen(c.origin) - half, nearest = o.cwiseMax(lo).cwiseMin(hi);
+            const float r = c.g->asInterface()->getBoundingRadius() + half.norm();
             if ((o - nearest).squaredNorm() > r * r) continue;
         }
         size_t before = m_obstacles.size();
@@ -176,13 +194,15 @@ void SimpleCollisionSpace::sweepOne(BodySweep& sweep, int index) {
         for (size_t k = before; k < m_obstacles.size() && !keep; ++k) {
             gcol::Aabb box;
             gcol::shapeAabb(m_obstacles[k], box);
-            keep = overlaps(box, lo, hi);
+            const Vec3 extra = half.cwiseAbs();
+            keep = overlaps(box, lo + half - extra, hi + half + extra);
         }
         if (!keep) {
             m_obstacles.resize(before);
             continue;
         }
         m_obstacleOwner.resize(m_obstacles.size(), int(j));
+        m_obstacleShift.resize(m_obstacles.size(), shift);
     }
     if (m_obstacles.empty()) return;
     m_moving.clear();
@@ -199,15 +219,20 @@ void SimpleCollisionSpace::sweepOne(BodySweep& sweep, int index) {
         for (size_t i = 0; i < nm && hit < 0; ++i)
             for (size_t j = 0; j < no; ++j) {
                 if (m_ignored[i * no + j]) continue;
+                const Vector& shift = m_obstacleShift[j];
                 Vector a;
-                float s = gcol::separationBound(m_moving[i], m_obstacles[j], a);
-                if (iteration == 0 && s <= kTolerance) { // touching at the start: contact resolution's
+                float s = gcol::separationBound(m_moving[i], shifted(m_obstacles[j], shift * (t - 1.0f)), a);
+                // Overlapping at the start, or touching without closing fast along the normal (resting,
+                // sliding): contact resolution's. Touching and closing fast (a head-on hit that began at
+                // an exact touch) is a hit at the start.
+                if (iteration == 0 && s <= kTolerance &&
+                    (s < 0.0f || dot(vec(dp) - shift, a) <= 0.25f * minDim)) {
                     m_ignored[i * no + j] = 1;
                     continue;
                 }
                 // The gap along a closes no faster than the motion along a plus the turn; a pair moving
                 // apart along a without turning never touches.
-                const float closing = std::max(0.0f, dot(vec(dp), a)) + turn;
+                const float closing = std::max(0.0f, dot(vec(dp) - shift, a)) + turn;
                 if (!(closing > 0.0f)) continue;
                 if (s <= kTolerance) {
                     hit = int(j);
@@ -237,7 +262,7 @@ void SimpleCollisionSpace::sweepOne(BodySweep& sweep, int index) {
     }
     // A hair past the touch along the approach, so the pair overlaps by about kSkin; never more than a tenth
     // of the body's smallest dimension further (a grazing approach).
-    const float approach = dot(vec(dp), axis);
+    const float approach = dot(vec(dp) - m_obstacleShift[size_t(hit)], axis);
     float extra = approach > 0.0f ? (gap + kSkin) / approach : 0.0f;
     extra = std::max(0.0f, std::min(extra, 0.1f * minDim / travel));
     sweep.fraction = std::min(1.0f, t + extra);

@@ -29,10 +29,12 @@ class iShapeCast {
 public:
     // For each sweep whose geometry moved far enough to pass through something (more than a quarter of its
     // smallest dimension), finds the first fraction of the motion at which it touches the geometry of another
-    // body (or a bodiless plane) held at that body's current pose, and sets fraction a hair past it, so that
-    // the pair overlaps by a fraction of a millimetre there and contact detection at that pose reports it.
-    // Positions are interpolated linearly (the centre of mass), orientations by slerp. Pairs already touching
-    // at the start are left to contact resolution. Other sweeps keep fraction = 1. Returns how many hit.
+    // body (or a bodiless plane), and sets fraction a hair past it, so that the pair overlaps by a fraction
+    // of a millimetre there and contact detection at that pose reports it. Positions are interpolated
+    // linearly (the centre of mass), orientations by slerp. The other geometry is at its current pose, or,
+    // when its body is swept too, moves along that body's translation (its turn is not swept). Pairs
+    // overlapping at the start, or touching without closing fast, are left to contact resolution. Other
+    // sweeps keep fraction = 1. Returns how many hit.
     virtual size_t sweepBodies(BodySweep* sweeps, size_t count) = 0;
 
 protected:
