@@ -34,6 +34,10 @@ float pointShapeDistance(const WorldShape& s, const Vector& p, Vector& closest);
 // when it already touches at t = 0.
 bool sweepSphere(const WorldShape& s, const Vector& p0, const Vector& p1, float r, float& t);
 
+// A lower bound on the distance between two shapes (negative when they overlap) and the unit axis it was
+// measured along, from a toward b (SeparationBound.cpp says how tight it is per pair).
+float separationBound(const WorldShape& a, const WorldShape& b, Vector& axis);
+
 // True when the shapes overlap (a cheap test used by the overlap queries).
 bool shapesOverlap(const WorldShape& a, const WorldShape& b);
 

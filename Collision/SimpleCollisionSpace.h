@@ -24,8 +24,10 @@
 #include "iCollisionSpace.h"
 #include "iContactBudget.h"
 #include "iContactFeatures.h"
+#include "iShapeCast.h"
 
 #include <list>
+#include <utility>
 #include <vector>
 
 class iRigidBody;
@@ -35,7 +37,8 @@ class SimpleCollisionSpace final : public iCollisionSpace,
                                    public iCollisionQueries,
                                    public iContactFeatures,
                                    public iCollisionEvents,
-                                   public iContactBudget {
+                                   public iContactBudget,
+                                   public iShapeCast {
 public:
     explicit SimpleCollisionSpace(size_t samplesPerSecond);
 
@@ -63,6 +66,7 @@ public:
     bool setContactBudget(size_t maxContacts) override;
     size_t getContactBudget() const override { return m_budget; }
     size_t getDroppedPairCount() const override { return m_droppedPairs; }
+    size_t sweepBodies(BodySweep* sweeps, size_t count) override; // SpaceShapeCast.cpp
     void suspend() const override {}
     void release() const override {}
     // Geometries are not deleted: they leave the space (and stay usable). Clears the default space if it
@@ -113,6 +117,19 @@ private:
     void forgetEventsOf(const CollisionGeometry* g);
     void finishNotifications();
     bool queryShapes(iCollisionGeometry* ig, std::vector<gcol::WorldShape>& out);
+    // SpaceShapeCast.cpp
+    struct CastGeometry {
+        CollisionGeometry* g;
+        int sweep;     // the sweep moving it, or -1 (-2: its pose is not finite)
+        bool posed;    // origin and rotation are read
+        Vector origin; // current pose
+        Matrix rotation;
+        Vector localOrigin;   // a swept one's origin from its root's COM, in the root's axes
+        Matrix localRotation; // and its rotation relative to the root's
+    };
+    void sweepOne(BodySweep& sweep, int index);
+    // Appends to m_moving the shapes of sweep's geometry with its root at (position, row-vector rotation).
+    void castShapesAt(int sweep, const Vector& position, const Matrix& rotation);
 
     // The contact budget (iContactBudget.h): what the last call dropped, and whether that was said.
     bool full() const { return m_contacts.size() >= m_budget; }
@@ -136,6 +153,16 @@ private:
     unsigned long long m_call = 0; // populateContactList calls, to tell this call's entries
     std::vector<iCollisionListener*> m_listenerSnapshot;
     std::vector<CollisionGeometry*> m_pendingRemove, m_pendingDelete;
+    // Shape cast scratch.
+    std::vector<CastGeometry> m_cast;
+    std::vector<std::pair<const void*, int>> m_sweepIndex; // (root dynamics, sweep), sorted
+    std::vector<int> m_castOrder;                          // m_cast indices grouped by sweep
+    std::vector<std::pair<int, int>> m_sweepRange;         // each sweep's range in m_castOrder
+    std::vector<gcol::WorldShape> m_moving, m_obstacles;
+    std::vector<int> m_obstacleOwner;     // m_cast index of each obstacle shape
+    std::vector<Vector> m_obstacleShift;  // how far it moves over the motion (another swept body's)
+    std::vector<Vector> m_sweepShift;     // each sweep's translation
+    std::vector<unsigned char> m_ignored; // moving x obstacle pairs touching at the start
     bool m_notifying = false;
     bool m_populating = false;
 };

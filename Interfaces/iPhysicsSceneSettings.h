@@ -1,4 +1,5 @@
-// iPhysicsSceneSettings.h - the simulator's knobs: gravity, step rate, integrator, solver, sleeping.
+// iPhysicsSceneSettings.h - the simulator's knobs: gravity, step rate, integrator, solver, sleeping,
+// continuous collision.
 //
 // Not part of the seed's iPhysicsScene, so that a game's own stand-in scene need not implement them. The
 // scene made by CreatePhysicsScene implements this interface too; settingsOf(scene) reaches it (nullptr for
@@ -35,6 +36,12 @@ public:
     // 0.5 s stops being integrated and solved until a contact with an awake body, a force, a torque, a new
     // velocity or a new pose wakes it.
     virtual void setSleepingEnabled(bool on) = 0;
+    // Continuous collision (default on, needs a space with iShapeCast.h such as the simple space): a body
+    // that moved more than a quarter of a shape's smallest dimension in a step is swept along that motion
+    // and put back where it first touched another body or a plane, keeping its velocity, so that no sphere,
+    // box or compound passes through anything at any speed; the next step resolves the contact there.
+    virtual void setContinuousCollisionEnabled(bool on) = 0;
+    virtual bool getContinuousCollisionEnabled() const = 0;
 
 protected:
     ~iPhysicsSceneSettings() = default; // part of a scene: Delete() the scene

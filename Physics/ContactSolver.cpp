@@ -210,6 +210,11 @@ void ContactSolver::solveManifold(Manifold& m, float h, bool pushOut) {
             float gap = separation(a, b, p);
             if (gap > 0.0f) {
                 target[i].bias = gap / h; // apart: may close the gap within the sub-step, no more
+            } else if (gap > -m_settings.touchOverlap && p.approachSpeed < -m_settings.restitutionThreshold) {
+                // An impact at a touch (where the continuous stage leaves a fast body) is stopped rigidly:
+                // a soft stop lets a few % of the approach through, metres in a sub-step at 10^4 m/s. Also in
+                // the push-out pass, where the approach is already stopped: a soft target there relaxes the
+                // impact's accumulated impulse and lets the same few % through.
             } else if (pushOut) {
                 target[i] = {std::max(m_biasRate * gap, -m_settings.maxPushSpeed), m_massScale,
                              m_impulseScale};

@@ -42,6 +42,7 @@ struct SolverSettings {
     float maxPushSpeed = 3.0f;         // m/s at most to push an overlap out
     float restitutionThreshold = 1.0f; // m/s of approach below which a contact does not bounce
     float deepOverlap = 0.01f;         // m: overlap beyond this is projected out at once (a late-found hit)
+    float touchOverlap = 0.001f;       // m: an impact into overlap shallower than this is stopped rigidly
     float matchDistance = 0.05f;       // m: a point within this of last step's anchor inherits its impulses
     float keepDistance = 0.01f;        // m: a point that came apart by less than this is kept (0: never)
     bool warmStart = true;             // start from last step's impulses

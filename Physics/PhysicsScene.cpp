@@ -331,6 +331,10 @@ void PhysicsScene::step(float dt) {
     //    the step's start with the solved velocities, then leftover overlap pushed out.
     if (contactCount > 0) resolveContacts(contacts, contactCount, dt);
 
+    // 6b. Continuous collision: a body whose motion passed into or through something goes back to where it
+    //     first touched it; the next step resolves that contact (ContinuousStage.h).
+    if (m_continuousOn) m_continuous.run(m_bodies, m_space);
+
     // 7. A step that produced NaN or Inf (absurd forces) is undone; otherwise it is the new valid state.
     for (size_t i = 0; i < m_bodies.size(); ++i) {
         RigidBody* b = m_bodies[i];

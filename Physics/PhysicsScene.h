@@ -7,6 +7,7 @@
 #include "Composite.h"
 #include "ContactResolution.h"
 #include "ContactSolver.h"
+#include "ContinuousStage.h"
 #include "iPhysicsScene.h"
 #include "iPhysicsSceneHooks.h"
 #include "iPhysicsSceneSettings.h"
@@ -62,6 +63,8 @@ public:
     bool setFrictionRule(CombineRule r) override;
     bool setRestitutionRule(CombineRule r) override;
     void setSleepingEnabled(bool on) override;
+    void setContinuousCollisionEnabled(bool on) override { m_continuousOn = on; }
+    bool getContinuousCollisionEnabled() const override { return m_continuousOn; }
     size_t getAwakeBodyCount() const override;
     float getMaxPenetration() const override { return m_solver.maxPenetrationBefore(); }
     float getRemainingPenetration() const override { return m_solver.maxPenetrationAfter(); }
@@ -116,6 +119,8 @@ private:
     ContactSolver m_solver;
     Islands m_islands;
     bool m_sleeping = true;
+    ContinuousStage m_continuous;
+    bool m_continuousOn = true;
 };
 
 } // namespace physics

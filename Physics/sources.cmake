@@ -8,6 +8,7 @@ set(GUARDIAN_PHYSICS_SOURCES
   ContactResolution.cpp
   ContactRestitution.cpp
   ContactSolver.cpp
+  ContinuousStage.cpp
   Integrators.cpp
   PhysicsFrame.cpp
   PhysicsScene.cpp
@@ -22,6 +23,7 @@ set(GUARDIAN_PHYSICS_HEADERS
   ContactResolution.h
   ContactSolver.h
   SolverRows.h
+  ContinuousStage.h
   Integrators.h
   MathBridge.h
   PhysicsScene.h

@@ -1,0 +1,275 @@
+// SpaceShapeCast.cpp - the simple space's shape cast (iShapeCast.h): time of impact of a moved body's
+// geometry against every other geometry, by conservative advancement.
+//
+// Conservative advancement (Mirtich; Box2D's time of impact works the same way with a tighter distance):
+// each shape pair's separationBound is a gap g along a unit axis a that separates them (for spheres and a
+// sphere against a box, the true distance). Along a fixed axis the gap closes no faster than the motion's
+// component on a plus how far turning can carry any point (angle * reach, reach = the farthest point from
+// the centre of mass), so nothing touches before t + g / closing for every pair; advance to the smallest and
+// repeat until a pair is within kTolerance. Each advance is safe, so no obstacle is ever stepped over,
+// whatever its thickness or the speed: the guarantee holds along the interpolated path (COM linear,
+// orientation slerp), against obstacles moving along their own translation since the last
+// populateContactList (the pair's closing speed then uses the relative motion; their turning is not swept).
+// Face-on approaches converge in one or two advances; a turning body or an edge-on box pair in more, up to
+// kMaxIterations, after which the body is stopped where it is (short of the obstacle: safe, never through). A
+// pair moving apart along its axis without turning (sliding along a floor it hovers over) is never a hit.
+// Cost: one pass over the geometry to find the swept bodies' geometry; then, only for a body that moved more
+// than a quarter of a shape's smallest dimension, its shapes against the obstacles in its swept bounds, a few
+// times.
+#include "MathEigen.h"
+#include "SimpleCollisionSpace.h"
+#include "iRigidBody.h"
+#include "iUtilities.h"
+
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <cmath>
+
+namespace {
+
+using Vec3 = Eigen::Vector3f;
+using Mat3 = Eigen::Matrix3f;
+using Quat = Eigen::Quaternionf;
+
+constexpr float kTolerance = 1e-4f; // m: a gap this small is a touch (and a pair this close at the start is
+                                    // touching: contact resolution has it)
+constexpr float kSkin = 2e-4f;      // m: how far past the touch the body is left, so that contact detection
+                                    // sees the pair; under half of the thinnest wall we promise (1 mm)
+constexpr int kMaxIterations = 32;
+constexpr int kUnusable = -2; // a geometry whose body's pose is not finite
+
+Vec3 eigen(const Vector& v) { return Vec3(v.x, v.y, v.z); }
+Vector vec(const Vec3& v) { return Vector(v.x(), v.y(), v.z()); }
+Quat quatOf(const Matrix& rowRotation) {
+    return Quat(Mat3(gmath::block3(rowRotation).transpose())).normalized();
+}
+
+bool overlaps(const gcol::Aabb& a, const Vec3& lo, const Vec3& hi) {
+    return a.min.x <= hi.x() && a.max.x >= lo.x() && a.min.y <= hi.y() && a.max.y >= lo.y() &&
+           a.min.z <= hi.z() && a.max.z >= lo.z();
+}
+
+// s moved by d.
+gcol::WorldShape shifted(gcol::WorldShape s, const Vector& d) {
+    s.sphere.centre += d;
+    s.box.centre += d;
+    s.plane.offset += dot(s.plane.normal, d);
+    return s;
+}
+
+} // namespace
+
+size_t SimpleCollisionSpace::sweepBodies(BodySweep* sweeps, size_t count) {
+    if (m_notifying || m_populating) {
+        error(L"iShapeCast::sweepBodies: called from inside a listener; ignored");
+        return 0;
+    }
+    if (!sweeps || count == 0) return 0;
+    m_sweepIndex.clear();
+    for (size_t i = 0; i < count; ++i) {
+        sweeps[i].fraction = 1.0f;
+        sweeps[i].hit = nullptr;
+        if (sweeps[i].body) m_sweepIndex.emplace_back(&sweeps[i].body->getDynamics(), int(i));
+    }
+    std::sort(m_sweepIndex.begin(), m_sweepIndex.end());
+    // Every geometry that takes part and which sweep (if any) moves it. Poses are read now only for the
+    // swept ones; an obstacle's only when some body turns out fast (most steps: none).
+    m_cast.clear();
+    std::vector<int>& perSweep = m_castOrder; // first used as a count per sweep
+    perSweep.assign(count + 1, 0);
+    for (iCollisionGeometry* o : m_geometry) {
+        CastGeometry c;
+        c.g = CollisionGeometry::from(o);
+        c.sweep = -1;
+        c.posed = false;
+        if (!c.g->body()) {
+            if (!c.g->isPlane()) continue;
+        } else {
+            const void* root = c.g->body()->getDynamics().attachmentRoot();
+            auto it = std::lower_bound(m_sweepIndex.begin(), m_sweepIndex.end(), std::make_pair(root, -1));
+            if (it != m_sweepIndex.end() && it->first == root) {
+                if (!c.g->currentPose(c.origin, c.rotation)) continue;
+                c.sweep = it->second;
+                c.posed = true;
+                ++perSweep[size_t(c.sweep)];
+            }
+        }
+        m_cast.push_back(c);
+    }
+    // Each sweep's geometry as one range of m_castOrder (a counting sort, in space order within a sweep).
+    m_sweepRange.resize(count);
+    int next = 0;
+    for (size_t i = 0; i < count; ++i) {
+        m_sweepRange[i] = std::make_pair(next, next);
+        next += perSweep[i];
+    }
+    m_castOrder.assign(size_t(next), 0);
+    for (size_t j = 0; j < m_cast.size(); ++j)
+        if (m_cast[j].sweep >= 0)
+            m_castOrder[size_t(m_sweepRange[size_t(m_cast[j].sweep)].second++)] = int(j);
+    // Each swept body's translation: other bodies' geometry is an obstacle moving that way over the motion.
+    m_sweepShift.resize(count);
+    for (size_t i = 0; i < count; ++i)
+        m_sweepShift[i] =
+            sweeps[i].body ? sweeps[i].body->getDynamics().position - sweeps[i].startPosition : Vector();
+    size_t hits = 0;
+    for (size_t i = 0; i < count; ++i) {
+        if (!sweeps[i].body) continue;
+        sweepOne(sweeps[i], int(i));
+        if (sweeps[i].hit) ++hits;
+    }
+    return hits;
+}
+
+void SimpleCollisionSpace::castShapesAt(int sweep, const Vector& position, const Matrix& rotation) {
+    const Mat3 r = gmath::block3(rotation).transpose();
+    for (int j = m_sweepRange[size_t(sweep)].first; j < m_sweepRange[size_t(sweep)].second; ++j) {
+        const CastGeometry& c = m_cast[size_t(m_castOrder[size_t(j)])];
+        if (c.g->isPlane()) continue;
+        Vector origin = vec(eigen(position) + r * eigen(c.localOrigin));
+        Matrix rot = gmath::fromBlock3((r * gmath::block3(c.localRotation).transpose()).transpose());
+        c.g->worldShapes(origin, rot, m_moving);
+    }
+}
+
+void SimpleCollisionSpace::sweepOne(BodySweep& sweep, int index) {
+    const RBDynamics& d = sweep.body->getDynamics();
+    const Vec3 p0 = eigen(sweep.startPosition), p1 = eigen(d.position);
+    const Quat q0 = quatOf(sweep.startOrientation), q1 = quatOf(d.orientation);
+    if (!p0.allFinite() || !p1.allFinite() || !q0.coeffs().allFinite() || !q1.coeffs().allFinite()) return;
+    const float angle = q0.angularDistance(q1);
+    // Whether any geometry moved far enough to pass through something (the test the space's sampling uses).
+    bool fast = false;
+    const Vec3 dp = p1 - p0;
+    const std::pair<int, int> range = m_sweepRange[size_t(index)];
+    for (int j = range.first; j < range.second && !fast; ++j) {
+        const CastGeometry& c = m_cast[size_t(m_castOrder[size_t(j)])];
+        if (c.g->isPlane()) continue;
+        // The geometry's origin moved by dp plus the turn of its arm from the COM, at most angle * arm.
+        const float arm = (eigen(c.origin) - p1).norm();
+        const float moved = dp.norm() + angle * (arm + c.g->asInterface()->getBoundingRadius());
+        fast = moved > 0.25f * c.g->minDimension();
+    }
+    if (!fast) return;
+    // Each geometry's pose in the root's frame, and how far the farthest point is from the COM.
+    const Mat3 r1 = q1.toRotationMatrix();
+    float reach = 0.0f, minDim = 3.4e38f;
+    for (int j = range.first; j < range.second; ++j) {
+        CastGeometry& c = m_cast[size_t(m_castOrder[size_t(j)])];
+        if (c.g->isPlane()) continue;
+        const Vec3 offset = r1.transpose() * (eigen(c.origin) - p1);
+        c.localOrigin = vec(offset);
+        c.localRotation =
+            gmath::fromBlock3((r1.transpose() * gmath::block3(c.rotation).transpose()).transpose());
+        reach = std::max(reach, offset.norm() + c.g->asInterface()->getBoundingRadius());
+        minDim = std::min(minDim, c.g->minDimension());
+    }
+    const float travel = (p1 - p0).norm() + angle * reach; // no point moves farther over the motion
+    if (!(travel > 0.0f) || !std::isfinite(travel)) return;
+    // Obstacles: the other geometry within the swept bounds (planes are unbounded: always).
+    const Vec3 lo = p0.cwiseMin(p1) - Vec3::Constant(reach), hi = p0.cwiseMax(p1) + Vec3::Constant(reach);
+    m_obstacles.clear();
+    m_obstacleOwner.clear();
+    m_obstacleShift.clear();
+    for (size_t j = 0; j < m_cast.size(); ++j) {
+        CastGeometry& c = m_cast[j];
+        if (c.sweep == index) continue;
+        if (!c.posed) { // read once, for the first fast body that needs it
+            c.posed = true;
+            if (!c.g->currentPose(c.origin, c.rotation)) c.sweep = kUnusable;
+        }
+        if (c.sweep == kUnusable) continue;
+        // Another swept body's geometry moves from its start (current pose - shift) to its current pose; so
+        // does any other that moved since the contacts were found (a kinematic paddle, a slower body): held
+        // at its end pose, a paddle chasing a ball it just sent off stood in the ball's path.
+        const CollisionGeometry::SpaceState& st = c.g->spaceState();
+        const Vector shift = c.sweep >= 0 ? m_sweepShift[size_t(c.sweep)]
+                             : st.hasPrevious && st.previousBody == c.g->body() ? c.origin - st.previousOrigin
+                                                                                : Vector();
+        const Vec3 half = 0.5f * eigen(shift);
+        if (!c.g->isPlane()) { // its bounding sphere against the swept bounds first: most are far
+            const Vec3 o = eigen(c.origin) - half, nearest = o.cwiseMax(lo).cwiseMin(hi);
+            const float r = c.g->asInterface()->getBoundingRadius() + half.norm();
+            if ((o - nearest).squaredNorm() > r * r) continue;
+        }
+        size_t before = m_obstacles.size();
+        c.g->worldShapes(c.origin, c.rotation, m_obstacles);
+        bool keep = c.g->isPlane();
+        for (size_t k = before; k < m_obstacles.size() && !keep; ++k) {
+            gcol::Aabb box;
+            gcol::shapeAabb(m_obstacles[k], box);
+            const Vec3 extra = half.cwiseAbs();
+            keep = overlaps(box, lo + half - extra, hi + half + extra);
+        }
+        if (!keep) {
+            m_obstacles.resize(before);
+            continue;
+        }
+        m_obstacleOwner.resize(m_obstacles.size(), int(j));
+        m_obstacleShift.resize(m_obstacles.size(), shift);
+    }
+    if (m_obstacles.empty()) return;
+    m_moving.clear();
+    castShapesAt(index, sweep.startPosition, sweep.startOrientation);
+    const size_t nm = m_moving.size(), no = m_obstacles.size();
+    m_ignored.assign(nm * no, 0);
+    const float turn = angle * reach; // how far turning can carry any point over the whole motion
+    float t = 0.0f, gap = 0.0f;
+    int hit = -1;
+    Vector axis;
+    for (int iteration = 0; hit < 0; ++iteration) {
+        float advance = 3.4e38f; // the largest safe step, as a fraction of the motion
+        int nearest = -1;
+        for (size_t i = 0; i < nm && hit < 0; ++i)
+            for (size_t j = 0; j < no; ++j) {
+                if (m_ignored[i * no + j]) continue;
+                const Vector& shift = m_obstacleShift[j];
+                Vector a;
+                float s = gcol::separationBound(m_moving[i], shifted(m_obstacles[j], shift * (t - 1.0f)), a);
+                // Overlapping at the start, or touching without closing fast along the normal (resting,
+                // sliding): contact resolution's. Touching and closing fast (a head-on hit that began at
+                // an exact touch) is a hit at the start.
+                if (iteration == 0 && s <= kTolerance &&
+                    (s < 0.0f || dot(vec(dp) - shift, a) <= 0.25f * minDim)) {
+                    m_ignored[i * no + j] = 1;
+                    continue;
+                }
+                // The gap along a closes no faster than the motion along a plus the turn; a pair moving
+                // apart along a without turning never touches.
+                const float closing = std::max(0.0f, dot(vec(dp) - shift, a)) + turn;
+                if (!(closing > 0.0f)) continue;
+                if (s <= kTolerance) {
+                    hit = int(j);
+                    gap = s;
+                    axis = a;
+                    break;
+                }
+                if (s / closing < advance) {
+                    advance = s / closing;
+                    nearest = int(j);
+                    gap = s;
+                    axis = a;
+                }
+            }
+        if (hit >= 0) break;
+        if (nearest < 0) return;           // nothing it can reach
+        if (iteration == kMaxIterations) { // slow convergence: stop here, short of the obstacle
+            hit = nearest;
+            gap = -kSkin;
+            break;
+        }
+        t += advance;
+        if (t >= 1.0f) return;
+        m_moving.clear();
+        Matrix rot = gmath::fromBlock3(Mat3(q0.slerp(t, q1).toRotationMatrix()).transpose());
+        castShapesAt(index, vec(p0 + dp * t), rot);
+    }
+    // A hair past the touch along the approach, so the pair overlaps by about kSkin; never more than a tenth
+    // of the body's smallest dimension further (a grazing approach).
+    const float approach = dot(vec(dp) - m_obstacleShift[size_t(hit)], axis);
+    float extra = approach > 0.0f ? (gap + kSkin) / approach : 0.0f;
+    extra = std::max(0.0f, std::min(extra, 0.1f * minDim / travel));
+    sweep.fraction = std::min(1.0f, t + extra);
+    sweep.hit = m_cast[size_t(m_obstacleOwner[size_t(hit)])].g->asInterface();
+}

@@ -1,0 +1,48 @@
+// ContinuousStage.cpp - the continuous collision stage of the step (ContinuousStage.h).
+#include "ContinuousStage.h"
+
+#include "ContactSolver.h"
+#include "MathBridge.h"
+#include "RigidBody.h"
+
+namespace physics {
+
+size_t ContinuousStage::run(const std::vector<RigidBody*>& bodies, iCollisionSpace* space) {
+    iShapeCast* cast = space ? castOf(space) : nullptr;
+    if (!cast) return 0;
+    m_sweeps.clear();
+    m_owners.clear();
+    for (RigidBody* b : bodies) {
+        const RBDynamics& d = b->getDynamics();
+        if (b->dying() || b->pendingRemoval || b->asleep() || d.attachedTo() || immovable(d)) continue;
+        // An unmoved body (a resting one the solver held still) needs no sweep: a shorter batch.
+        if (d.position == b->previousPosition() && b->rotation.coeffs() == b->previousRotation().coeffs())
+            continue;
+        BodySweep s;
+        s.body = b;
+        s.startPosition = b->previousPosition();
+        s.startOrientation = toOrientation(b->previousRotation());
+        m_sweeps.push_back(s);
+        m_owners.push_back(b);
+    }
+    if (m_sweeps.empty() || cast->sweepBodies(m_sweeps.data(), m_sweeps.size()) == 0) return 0;
+    size_t moved = 0;
+    for (size_t i = 0; i < m_sweeps.size(); ++i) {
+        const BodySweep& s = m_sweeps[i];
+        if (!s.hit || !(s.fraction < 1.0f)) continue;
+        RigidBody* b = m_owners[i];
+        RBDynamics& d = b->getDynamics();
+        const Vec3 p0 = toEigen(s.startPosition), p1 = toEigen(d.position);
+        const Quat q = b->previousRotation().slerp(s.fraction, b->rotation).normalized();
+        d.position = toVector(p0 + (p1 - p0) * s.fraction);
+        d.orientation = toOrientation(q);
+        b->rotation = q;
+        b->writtenOrientation = d.orientation;
+        // The angular velocity is kept; the next step derives the momentum from it at this orientation.
+        b->hasComposite = false;
+        ++moved;
+    }
+    return moved;
+}
+
+} // namespace physics
