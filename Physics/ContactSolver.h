@@ -145,6 +145,7 @@ private:
     std::vector<int> m_level;
     std::vector<std::vector<int>> m_touching;
     std::vector<std::pair<size_t, bool>> m_shock;
+    static constexpr float kHeavyRatio = 10.0f; // shock propagation acts under a body this much heavier
     // The soft contact for the current sub-step length.
     float m_biasRate = 0, m_massScale = 1, m_impulseScale = 0;
 };

@@ -58,6 +58,24 @@ void ContactSolver::orderByLevel() {
         return std::max(m_level[size_t(mx.a)], m_level[size_t(mx.b)]) <
                std::max(m_level[size_t(my.a)], m_level[size_t(my.b)]);
     });
+    // Only under a heavy body: a pair whose upper body outweighs the lower kHeavyRatio times, and every pair
+    // below one down to the world. Elsewhere the pass's nudges (no reaction on the lower body) kept the
+    // 210-box pyramid jittering above the sleep speed: awake for 10 s instead of asleep within 2.
+    std::vector<char> carries(m_bodies.size(), 0);
+    std::vector<char> keep(m_shock.size(), 0);
+    for (size_t j = m_shock.size(); j-- > 0;) { // from the top down
+        const Manifold& m = m_manifolds[m_shock[j].first];
+        const int upper = m_shock[j].second ? m.b : m.a, lower = m_shock[j].second ? m.a : m.b;
+        const SolverBody &u = m_bodies[size_t(upper)], &l = m_bodies[size_t(lower)];
+        const bool heavy = movable(l) && u.invMass * kHeavyRatio < l.invMass;
+        if (!heavy && !carries[size_t(upper)]) continue;
+        keep[j] = 1;
+        carries[size_t(lower)] = 1;
+    }
+    size_t kept = 0;
+    for (size_t j = 0; j < m_shock.size(); ++j)
+        if (keep[j]) m_shock[kept++] = m_shock[j];
+    m_shock.resize(kept);
 }
 
 void ContactSolver::propagateShock(float h) {

@@ -57,19 +57,22 @@ struct Crowd {
 TEST(Crowd, AThousandSpheresSpawnedAtOnePointAreNotFlung) {
     // Pushing overlap out moves a body at most at the cap (SolverSettings::maxPushSpeed, 3 m/s) and leaves
     // it none of that speed; gravity adds g t. Before the fix: 669 m/s, and 71,905 m/s at this spawn.
-    // Measured: 0.49 m/s and 5.7 cm a step (the 7.8 m jumps of the deep-overlap projection are gone, too).
+    // Measured (default budget): 0.49 m/s and 5.7 cm a step (the 7.8 m jumps of the deep-overlap projection
+    // are gone, too).
     Crowd c(1000);
+    // The default budget's 200,000 contacts cost 600 MB here (bench_crowd measures it); CI keeps to 50,000.
+    iContactBudget* budget = contactBudgetOf(c.f.world->space());
+    ASSERT_NE(budget, nullptr);
+    EXPECT_EQ(budget->getContactBudget(), iContactBudget::kDefaultContactBudget);
+    ASSERT_TRUE(budget->setContactBudget(50000));
     const unsigned long errors = errorCount();
     c.run(3, kG);
     EXPECT_TRUE(c.f.world->allFinite());
     EXPECT_LE(c.worstSpeedExcess, 0.0f) << "fastest " << c.worstSpeed << " m/s";
     // A step moves a body by its velocity, the capped push and the projection of what its pairs closed.
     EXPECT_LE(c.worstMove, kDt * (3.0f + 3.0f * c.worstSpeed) + 1e-4f);
-    // 499,500 touching pairs: more than the default budget of 200,000 contacts, said once.
-    const iContactBudget* budget = contactBudgetOf(c.f.world->space());
-    ASSERT_NE(budget, nullptr);
-    EXPECT_EQ(budget->getContactBudget(), iContactBudget::kDefaultContactBudget);
-    EXPECT_LE(c.f.world->space()->getNumContacts(), iContactBudget::kDefaultContactBudget);
+    // 499,500 touching pairs: more than the budget, said once.
+    EXPECT_EQ(c.mostContacts, 50000u);
     EXPECT_EQ(errorCount(), errors + 1);
     RecordProperty("max_speed_m_s", std::to_string(c.worstSpeed));
     RecordProperty("max_move_per_step_m", std::to_string(c.worstMove));
