@@ -128,6 +128,7 @@ void SimpleCollisionSpace::testPair(const Entry& a, const Entry& b, float delta)
     const size_t before = m_contacts.size();
     m_cut = false;
     bool hit = testAtPoses(a, b, 1.0f, 0);
+    const bool touchingNow = hit;
     if (!hit && delta > 0.0f && (a.moved || b.moved) && !a.plane && !b.plane) {
         Vector rel = (a.origin - a.prevOrigin) - (b.origin - b.prevOrigin);
         float aRot = a.motion - (a.origin - a.prevOrigin).length();
@@ -161,5 +162,6 @@ void SimpleCollisionSpace::testPair(const Entry& a, const Entry& b, float delta)
     for (size_t i = before; i < m_contacts.size(); ++i) sum += m_contacts[i].pos;
     n.points = int(m_contacts.size() - before);
     n.pos = sum / float(n.points);
+    n.atPose = touchingNow;
     m_notices.push_back(n);
 }

@@ -98,6 +98,7 @@ public:
         iRigidBody *b1, *b2;
         Vector normal, pos;
         int points;
+        bool atPose; // touching at the poses of the call (not found along the motion before them)
     };
 
 private:
@@ -128,6 +129,14 @@ private:
         Matrix localRotation; // and its rotation relative to the root's
     };
     void sweepOne(BodySweep& sweep, int index);
+    // Whether a geometry of the sweep whose geometry is m_castOrder[range] touched obstacle at the last call.
+    bool touchedAtStart(std::pair<int, int> range, const CollisionGeometry* obstacle) const;
+    using GeometryPair = std::pair<const CollisionGeometry*, const CollisionGeometry*>; // lower address first
+    static GeometryPair pairOf(const CollisionGeometry* a, const CollisionGeometry* b) {
+        return a < b ? GeometryPair(a, b) : GeometryPair(b, a);
+    }
+    std::vector<GeometryPair> m_touchedAtStart; // sorted
+    std::vector<float> m_obstacleAllowance;     // per obstacle shape: how deep it may be entered
     // Appends to m_moving the shapes of sweep's geometry with its root at (position, row-vector rotation).
     void castShapesAt(int sweep, const Vector& position, const Matrix& rotation);
 

@@ -12,7 +12,8 @@
 // populateContactList (the pair's closing speed then uses the relative motion; their turning is not swept).
 // Face-on approaches converge in one or two advances; a turning body or an edge-on box pair in more, up to
 // kMaxIterations, after which the body is stopped where it is (short of the obstacle: safe, never through). A
-// pair moving apart along its axis without turning (sliding along a floor it hovers over) is never a hit.
+// pair moving apart along its axis without turning (sliding along a floor it hovers over) is never a hit, and
+// a pair the last populateContactList found touching is a hit only once it is kTouchingAllowance deep.
 // Cost: one pass over the geometry to find the swept bodies' geometry; then, only for a body that moved more
 // than a quarter of a shape's smallest dimension, its shapes against the obstacles in its swept bounds, a few
 // times.
@@ -37,6 +38,11 @@ constexpr float kTolerance = 1e-4f; // m: a gap this small is a touch (and a pai
 constexpr float kSkin = 2e-4f;      // m: how far past the touch the body is left, so that contact detection
                                     // sees the pair; under half of the thinnest wall we promise (1 mm)
 constexpr int kMaxIterations = 32;
+// m: how far a body may go into something it already touched when the contacts were found before the cast
+// calls it a hit. Such a pair is the contact solve's; the straight-line path (COM linear, orientation slerp)
+// of a body turning about the touch cuts into the surface by a little (a domino leaning on the next one was
+// put back every step, keeping a velocity gravity kept growing). The solver's deep overlap (1 cm).
+constexpr float kTouchingAllowance = 0.0f;
 constexpr int kUnusable = -2; // a geometry whose body's pose is not finite
 
 Vec3 eigen(const Vector& v) { return Vec3(v.x, v.y, v.z); }
@@ -73,6 +79,11 @@ size_t SimpleCollisionSpace::sweepBodies(BodySweep* sweeps, size_t count) {
         if (sweeps[i].body) m_sweepIndex.emplace_back(&sweeps[i].body->getDynamics(), int(i));
     }
     std::sort(m_sweepIndex.begin(), m_sweepIndex.end());
+    // The pairs the last populateContactList found touching at their poses: the contact solve has them.
+    m_touchedAtStart.clear();
+    for (const Notice& n : m_touching)
+        if (n.atPose) m_touchedAtStart.push_back(pairOf(n.g1, n.g2));
+    std::sort(m_touchedAtStart.begin(), m_touchedAtStart.end());
     // Every geometry that takes part and which sweep (if any) moves it. Poses are read now only for the
     // swept ones; an obstacle's only when some body turns out fast (most steps: none).
     m_cast.clear();
@@ -133,6 +144,17 @@ void SimpleCollisionSpace::castShapesAt(int sweep, const Vector& position, const
     }
 }
 
+bool SimpleCollisionSpace::touchedAtStart(std::pair<int, int> range,
+                                          const CollisionGeometry* obstacle) const {
+    if (m_touchedAtStart.empty()) return false;
+    for (int j = range.first; j < range.second; ++j) {
+        const CollisionGeometry* mine = m_cast[size_t(m_castOrder[size_t(j)])].g;
+        if (std::binary_search(m_touchedAtStart.begin(), m_touchedAtStart.end(), pairOf(mine, obstacle)))
+            return true;
+    }
+    return false;
+}
+
 void SimpleCollisionSpace::sweepOne(BodySweep& sweep, int index) {
     const RBDynamics& d = sweep.body->getDynamics();
     const Vec3 p0 = eigen(sweep.startPosition), p1 = eigen(d.position);
@@ -172,6 +194,7 @@ void SimpleCollisionSpace::sweepOne(BodySweep& sweep, int index) {
     m_obstacles.clear();
     m_obstacleOwner.clear();
     m_obstacleShift.clear();
+    m_obstacleAllowance.clear();
     for (size_t j = 0; j < m_cast.size(); ++j) {
         CastGeometry& c = m_cast[j];
         if (c.sweep == index) continue;
@@ -208,6 +231,8 @@ void SimpleCollisionSpace::sweepOne(BodySweep& sweep, int index) {
         }
         m_obstacleOwner.resize(m_obstacles.size(), int(j));
         m_obstacleShift.resize(m_obstacles.size(), shift);
+        m_obstacleAllowance.resize(m_obstacles.size(),
+                                   touchedAtStart(range, c.g) ? kTouchingAllowance : 0.0f);
     }
     if (m_obstacles.empty()) return;
     m_moving.clear();
@@ -226,7 +251,8 @@ void SimpleCollisionSpace::sweepOne(BodySweep& sweep, int index) {
                 if (m_ignored[i * no + j]) continue;
                 const Vector& shift = m_obstacleShift[j];
                 Vector a;
-                float s = gcol::separationBound(m_moving[i], shifted(m_obstacles[j], shift * (t - 1.0f)), a);
+                float s = gcol::separationBound(m_moving[i], shifted(m_obstacles[j], shift * (t - 1.0f)), a) +
+                          m_obstacleAllowance[j];
                 // Overlapping at the start, or touching without closing fast along the normal (resting,
                 // sliding): contact resolution's. Touching and closing fast (a head-on hit that began at
                 // an exact touch) is a hit at the start.

@@ -35,8 +35,9 @@ struct SolverBody {
     float invMass = 0;
     Mat3 invInertia = Mat3::Zero();
     // Projected out of a deep overlap this step: a correction, not motion, so a collision space must not
-    // sweep along it (the pose is stored as a teleport, RBDynamics::teleports).
+    // sweep along it (the pose is stored as a teleport, RBDynamics::teleports); the move it made.
     bool projected = false;
+    Vec3 projection = Vec3::Zero();
 };
 
 struct ContactPoint {

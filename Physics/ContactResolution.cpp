@@ -66,6 +66,7 @@ void SceneBodyAccess::acceptWrites(const std::vector<SolverBody>& bodies) const 
         body->writtenMomentum = b.root->angularMomentum;
         body->writtenOrientation = b.root->orientation;
         body->rotation = b.rotation;
+        body->projectedBy = toVector(b.projection);
     }
 }
 

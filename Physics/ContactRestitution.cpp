@@ -113,6 +113,8 @@ void ContactSolver::projectDeepOverlaps() {
             Vec3 push = m.points[0].normal * (excess / invMass);
             a.projected = a.projected || a.invMass > 0.0f;
             b.projected = b.projected || b.invMass > 0.0f;
+            a.projection -= a.invMass * push;
+            b.projection += b.invMass * push;
             a.com -= a.invMass * push;
             a.origin -= a.invMass * push;
             b.com += b.invMass * push;

@@ -20,7 +20,10 @@ size_t ContinuousStage::run(const std::vector<RigidBody*>& bodies, iCollisionSpa
             continue;
         BodySweep s;
         s.body = b;
-        s.startPosition = b->previousPosition();
+        // A projection out of an overlap is a correction, not part of the path: the path starts from the
+        // start pose moved by it (swept from the start itself, a ball a paddle had overtaken was cast back
+        // into the paddle).
+        s.startPosition = b->previousPosition() + b->projectedBy;
         s.startOrientation = toOrientation(b->previousRotation());
         m_sweeps.push_back(s);
         m_owners.push_back(b);
@@ -35,6 +38,11 @@ size_t ContinuousStage::run(const std::vector<RigidBody*>& bodies, iCollisionSpa
         const Vec3 p0 = toEigen(s.startPosition), p1 = toEigen(d.position);
         const Quat q = b->previousRotation().slerp(s.fraction, b->rotation).normalized();
         d.position = toVector(p0 + (p1 - p0) * s.fraction);
+        // The velocity it had at that moment: what the forces (gravity) add over the time it loses is not
+        // kept, or a body put back every step (turning while it leans on something) gains energy.
+        const float lost = 1.0f - s.fraction;
+        d.velocity = toVector(toEigen(d.velocity) - lost * b->forceDv);
+        d.angularVelocity = toVector(toEigen(d.angularVelocity) - lost * b->forceDw);
         d.orientation = toOrientation(q);
         b->rotation = q;
         b->writtenOrientation = d.orientation;

@@ -148,6 +148,7 @@ bool RigidBody::validate(const char* when) {
 void RigidBody::recordPreviousPose() {
     m_prevPosition = m_dyn.getWorldPosition();
     m_prevRotation = toQuat(m_dyn.getWorldOrientation());
+    projectedBy = Vector();
 }
 
 void RigidBody::recordStepPose() {

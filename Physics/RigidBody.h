@@ -78,6 +78,9 @@ public:
     // The world pose (COM, rotation) at the start of the current step.
     const Vector& previousPosition() const { return m_prevPosition; }
     const Quat& previousRotation() const { return m_prevRotation; }
+    // How far the contact solve projected the body out of a deep overlap this step (a correction, not a
+    // path: the continuous stage sweeps from the start pose moved by it).
+    Vector projectedBy;
 
     // Sleeping: a body (island) at rest for a while stops being integrated until something wakes it. The
     // state is RBDynamics::sleeping itself, so the collision space sees it without any copying.
