@@ -10,6 +10,8 @@ set(GUARDIAN_PHYSICS_SOURCES
   PhysicsFrame.cpp
   PhysicsScene.cpp
   PhysicsSceneContacts.cpp
+  SceneLifetime.cpp
+  WorldPoseCache.cpp
   RigidBody.cpp)
 set(GUARDIAN_PHYSICS_HEADERS
   BodyValidation.h
