@@ -59,6 +59,18 @@ void SimpleCollisionSpace::remove(iCollisionGeometry* o) {
 void SimpleCollisionSpace::removeNow(CollisionGeometry* g) {
     m_geometry.remove(g->asInterface());
     forgetEventsOf(g);
+    // The contact list outlives the call that built it (a scene reads it after its force generators ran,
+    // and they may delete geometry): no contact may name a geometry that is no longer here.
+    size_t keep = 0;
+    for (size_t i = 0; i < m_contacts.size(); ++i) {
+        const CollisionContact& c = m_contacts[i];
+        if (c.g1 == g->asInterface() || c.g2 == g->asInterface()) continue;
+        m_contacts[keep] = c;
+        m_features[keep] = m_features[i];
+        ++keep;
+    }
+    m_contacts.resize(keep);
+    m_features.resize(keep);
     g->setSpace(nullptr);
     g->spaceState() = CollisionGeometry::SpaceState();
 }
@@ -83,6 +95,7 @@ void SimpleCollisionSpace::Delete() const {
         g->spaceState() = CollisionGeometry::SpaceState();
     }
     if (getDefaultCollisionSpace() == this) setDefaultCollisionSpace(nullptr);
+    collisionSpaceDestroyed(this); // scenes colliding in it forget it (iCollisionSpace.h)
     delete this;
 }
 

@@ -136,7 +136,6 @@ private:
         return a < b ? GeometryPair(a, b) : GeometryPair(b, a);
     }
     std::vector<GeometryPair> m_touchedAtStart; // sorted
-    std::vector<float> m_obstacleAllowance;     // per obstacle shape: how deep it may be entered
     // Appends to m_moving the shapes of sweep's geometry with its root at (position, row-vector rotation).
     void castShapesAt(int sweep, const Vector& position, const Matrix& rotation);
 

@@ -13,7 +13,7 @@
 // Face-on approaches converge in one or two advances; a turning body or an edge-on box pair in more, up to
 // kMaxIterations, after which the body is stopped where it is (short of the obstacle: safe, never through). A
 // pair moving apart along its axis without turning (sliding along a floor it hovers over) is never a hit, and
-// a pair the last populateContactList found touching is a hit only once it is kTouchingAllowance deep.
+// a pair the last populateContactList found touching (at its poses) is left to the contact solve.
 // Cost: one pass over the geometry to find the swept bodies' geometry; then, only for a body that moved more
 // than a quarter of a shape's smallest dimension, its shapes against the obstacles in its swept bounds, a few
 // times.
@@ -38,11 +38,6 @@ constexpr float kTolerance = 1e-4f; // m: a gap this small is a touch (and a pai
 constexpr float kSkin = 2e-4f;      // m: how far past the touch the body is left, so that contact detection
                                     // sees the pair; under half of the thinnest wall we promise (1 mm)
 constexpr int kMaxIterations = 32;
-// m: how far a body may go into something it already touched when the contacts were found before the cast
-// calls it a hit. Such a pair is the contact solve's; the straight-line path (COM linear, orientation slerp)
-// of a body turning about the touch cuts into the surface by a little (a domino leaning on the next one was
-// put back every step, keeping a velocity gravity kept growing). The solver's deep overlap (1 cm).
-constexpr float kTouchingAllowance = 0.0f;
 constexpr int kUnusable = -2; // a geometry whose body's pose is not finite
 
 Vec3 eigen(const Vector& v) { return Vec3(v.x, v.y, v.z); }
@@ -194,10 +189,12 @@ void SimpleCollisionSpace::sweepOne(BodySweep& sweep, int index) {
     m_obstacles.clear();
     m_obstacleOwner.clear();
     m_obstacleShift.clear();
-    m_obstacleAllowance.clear();
     for (size_t j = 0; j < m_cast.size(); ++j) {
         CastGeometry& c = m_cast[j];
-        if (c.sweep == index) continue;
+        // A pair found touching when the contacts were found is the contact solve's: the straight-line path
+        // (COM linear, orientation slerp) of a body turning about a touch cuts into the surface, and a domino
+        // leaning on the next one was put back every step.
+        if (c.sweep == index || touchedAtStart(range, c.g)) continue;
         if (!c.posed) { // read once, for the first fast body that needs it
             c.posed = true;
             if (!c.g->currentPose(c.origin, c.rotation)) c.sweep = kUnusable;
@@ -231,8 +228,6 @@ void SimpleCollisionSpace::sweepOne(BodySweep& sweep, int index) {
         }
         m_obstacleOwner.resize(m_obstacles.size(), int(j));
         m_obstacleShift.resize(m_obstacles.size(), shift);
-        m_obstacleAllowance.resize(m_obstacles.size(),
-                                   touchedAtStart(range, c.g) ? kTouchingAllowance : 0.0f);
     }
     if (m_obstacles.empty()) return;
     m_moving.clear();
@@ -251,8 +246,7 @@ void SimpleCollisionSpace::sweepOne(BodySweep& sweep, int index) {
                 if (m_ignored[i * no + j]) continue;
                 const Vector& shift = m_obstacleShift[j];
                 Vector a;
-                float s = gcol::separationBound(m_moving[i], shifted(m_obstacles[j], shift * (t - 1.0f)), a) +
-                          m_obstacleAllowance[j];
+                float s = gcol::separationBound(m_moving[i], shifted(m_obstacles[j], shift * (t - 1.0f)), a);
                 // Overlapping at the start, or touching without closing fast along the normal (resting,
                 // sliding): contact resolution's. Touching and closing fast (a head-on hit that began at
                 // an exact touch) is a hit at the start.

@@ -269,42 +269,51 @@ void RBDynamics::ApplyImpulse(const Vector& impulse, const Vector& point) {
 }
 
 RBDynamics::MassProperties RBDynamics::getCompositeMassProperties() const {
-    // First pass: mass and centre; second pass: inertia about that centre (parallel-axis theorem), each
-    // part's tensor turned to world axes (R^T I R for row vectors). Iterative depth-first walks, accumulated
-    // in double.
+    // Every part's world pose first, in one walk down from the root (each from its parent's: O(parts), where
+    // asking each part for its world pose was O(parts x depth), and detaching from a deep chain repeated
+    // it). Then mass and centre, then inertia about that centre (parallel-axis theorem), each part's tensor
+    // turned to world axes (R^T I R for row vectors), accumulated in double.
     const RBDynamics* root = attachmentRoot();
+    struct Placed {
+        const RBDynamics* n;
+        Vector p;
+        Matrix r;
+    };
+    std::vector<Placed> parts, stack;
+    stack.push_back({root, root->position, root->orientation});
+    while (!stack.empty()) {
+        Placed x = stack.back();
+        stack.pop_back();
+        parts.push_back(x);
+        for (const RBDynamics* c = x.n->m_firstChild; c; c = c->m_nextSibling)
+            stack.push_back({c, c->position * x.r + x.p, c->orientation * x.r}); // as getWorldPosition does
+    }
     MassProperties out{0.0f, Vector(), Matrix(1), Matrix()};
     double m = 0, cx = 0, cy = 0, cz = 0;
     bool infinite = false, locked = false;
-    auto next = [root](const RBDynamics* n) -> const RBDynamics* {
-        if (n->m_firstChild) return n->m_firstChild;
-        while (n && n != root && !n->m_nextSibling) n = n->m_parent;
-        return (n && n != root) ? n->m_nextSibling : nullptr;
-    };
-    for (const RBDynamics* n = root; n; n = next(n)) {
-        if (!(n->mass < INFINITE_MASS)) infinite = true;
-        if (isRotationLock(n->m_inverseInertia)) locked = true;
-        Vector p = n->getWorldPosition();
-        m += n->mass;
-        cx += double(n->mass) * p.x;
-        cy += double(n->mass) * p.y;
-        cz += double(n->mass) * p.z;
+    for (const Placed& x : parts) {
+        if (!(x.n->mass < INFINITE_MASS)) infinite = true;
+        if (isRotationLock(x.n->m_inverseInertia)) locked = true;
+        m += x.n->mass;
+        cx += double(x.n->mass) * x.p.x;
+        cy += double(x.n->mass) * x.p.y;
+        cz += double(x.n->mass) * x.p.z;
     }
     if (infinite || !(m > 0)) {
         out.mass = infinite ? INFINITE_MASS : float(m);
         out.centre = root->position;
-        out.inertia = root->getWorldOrientation().transpose() * root->m_inertia * root->getWorldOrientation();
+        out.inertia = root->orientation.transpose() * root->m_inertia * root->orientation;
         out.inverseInertia = Matrix(0);
         return out;
     }
     out.mass = float(m);
     out.centre = Vector(float(cx / m), float(cy / m), float(cz / m));
     Eigen::Matrix3d inertia = Eigen::Matrix3d::Zero();
-    for (const RBDynamics* n = root; n; n = next(n)) {
-        gmath::Mat3 r = gmath::block3(n->getWorldOrientation());
-        inertia += (r.transpose() * gmath::block3(n->m_inertia) * r).cast<double>();
-        Eigen::Vector3d d = gmath::map(n->getWorldPosition() - out.centre).cast<double>();
-        inertia += double(n->mass) * (d.squaredNorm() * Eigen::Matrix3d::Identity() - d * d.transpose());
+    for (const Placed& x : parts) {
+        gmath::Mat3 r = gmath::block3(x.r);
+        inertia += (r.transpose() * gmath::block3(x.n->m_inertia) * r).cast<double>();
+        Eigen::Vector3d d = gmath::map(x.p - out.centre).cast<double>();
+        inertia += double(x.n->mass) * (d.squaredNorm() * Eigen::Matrix3d::Identity() - d * d.transpose());
     }
     out.inertia = gmath::fromBlock3(inertia.cast<float>());
     // A part whose rotation is locked (zero inverse tensor) locks the whole composite's.
@@ -321,12 +330,40 @@ RBDynamics* RBDynamics::attachmentRoot() const {
     return const_cast<RBDynamics*>(r);
 }
 
+// World poses go from the root down the chain (p_world = p R_parent + P_parent, R_world = R R_parent), in
+// one pass: O(depth). (Recursing for the position and the orientation separately was O(depth^2) per call.)
+// The same products in the same order as that recursion, so the result is the same to the bit.
+namespace {
+template <class Visit> void downFromRoot(const RBDynamics* leaf, Visit visit) {
+    thread_local std::vector<const RBDynamics*> path;
+    size_t base = path.size(); // re-entrant: each call uses its own tail of the scratch
+    for (const RBDynamics* n = leaf; n; n = n->attachedTo()) path.push_back(n);
+    for (size_t i = path.size(); i-- > base;) visit(*path[i], i + 1 == path.size());
+    path.resize(base);
+}
+} // namespace
+
 Vector RBDynamics::getWorldPosition() const {
-    return m_parent ? position * m_parent->getWorldOrientation() + m_parent->getWorldPosition() : position;
+    if (!m_parent) return position;
+    Vector p;
+    Matrix r;
+    downFromRoot(this, [&](const RBDynamics& n, bool root) {
+        if (root) {
+            p = n.position;
+            r = n.orientation;
+        } else {
+            p = n.position * r + p;
+            r = n.orientation * r;
+        }
+    });
+    return p;
 }
 
 Matrix RBDynamics::getWorldOrientation() const {
-    return m_parent ? orientation * m_parent->getWorldOrientation() : orientation;
+    if (!m_parent) return orientation;
+    Matrix r;
+    downFromRoot(this, [&](const RBDynamics& n, bool root) { r = root ? n.orientation : n.orientation * r; });
+    return r;
 }
 
 Vector RBDynamics::getWorldOrigin() const {
@@ -378,7 +415,9 @@ void RBDynamics::attachTo(RBDynamics* p) {
     if (p) {
         Matrix parentRot = p->getWorldOrientation();
         position = (worldPos - p->getWorldPosition()) * parentRot.transpose();
-        orientation = worldRot * parentRot.transpose();
+        // Cleaned: the transpose is the inverse only of an exact rotation, and the float error of an
+        // unclean one doubled with every level of a chain built by attaching (a 1,000-deep one overflowed).
+        orientation = orthoNormalize(worldRot * parentRot.transpose());
         m_parent = p;
         m_nextSibling = p->m_firstChild;
         p->m_firstChild = this;

@@ -7,8 +7,11 @@
 // interfaces of its own: iCollisionQueries.h, iContactFeatures.h.
 #pragma once
 
+#include <algorithm>
 #include <cstddef>
 #include <list>
+#include <utility>
+#include <vector>
 
 #include "MathDeclarations.h"
 
@@ -64,3 +67,28 @@ inline void setDefaultCollisionSpace(iCollisionSpace* cs) {
     guardian_detail::defaultCollisionSpaceSlot() = cs;
 }
 inline iCollisionSpace* getDefaultCollisionSpace() { return guardian_detail::defaultCollisionSpaceSlot(); }
+
+// --- space lifetime: where the collision detector tells the simulator ---
+// A space calls collisionSpaceDestroyed(cs) from Delete(), before it goes. A physics scene watches for it and
+// forgets a space it was colliding in (as if setNewGlobalCollisionSpace(nullptr) had been called), so
+// deleting the space before the scene is safe. The same pattern as watchRigidBodies (iRigidBody.h).
+using CollisionSpaceWatcher = void (*)(const iCollisionSpace* dying, void* user);
+
+namespace guardian_detail {
+inline std::vector<std::pair<CollisionSpaceWatcher, void*>>& collisionSpaceWatchers() {
+    static std::vector<std::pair<CollisionSpaceWatcher, void*>> watchers;
+    return watchers;
+}
+} // namespace guardian_detail
+
+inline void watchCollisionSpaces(CollisionSpaceWatcher w, void* user) {
+    guardian_detail::collisionSpaceWatchers().emplace_back(w, user);
+}
+inline void unwatchCollisionSpaces(CollisionSpaceWatcher w, void* user) {
+    auto& ws = guardian_detail::collisionSpaceWatchers();
+    ws.erase(std::remove(ws.begin(), ws.end(), std::make_pair(w, user)), ws.end());
+}
+inline void collisionSpaceDestroyed(const iCollisionSpace* cs) {
+    auto ws = guardian_detail::collisionSpaceWatchers(); // a copy: a watcher may unwatch itself
+    for (auto& w : ws) w.first(cs, w.second);
+}

@@ -31,11 +31,15 @@ public:
     // own iRigidBody) whose geometry is in this scene's space is an immovable obstacle: bodies bounce off it.
     virtual bool add(iRigidBody* o) = 0;
     // Sets the default collision space for geometries created from now on, and the space this scene
-    // collides its bodies in.
+    // collides its bodies in. Deleting that space later is safe: the scene forgets it
+    // (collisionSpaceDestroyed, iCollisionSpace.h).
     virtual void setNewGlobalCollisionSpace(iCollisionSpace* cs) = 0;
     // Resumes after suspend(): `now` becomes the time base, nothing is integrated for the time in between.
     virtual void restore(int now) = 0;
     // execution functions
+    // Called from inside an update (a fixed updater, force generator or listener of any scene): refused
+    // with error(). Deletions made from those callbacks wait for the end of the step (bodies) or the update
+    // (scenes), whichever scene they belong to.
     virtual void update(int now) = 0;
     // termination functions
     // Re-bases time at `now` (as restore) and drops the accumulated partial step; bodies are kept.

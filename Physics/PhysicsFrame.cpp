@@ -9,7 +9,28 @@
 #include "iPhysicsFrame.h"
 #include "iUtilities.h"
 
+#include <unordered_map>
+#include <vector>
+
 namespace physics {
+
+class PhysicsFrame;
+namespace {
+// PhysicsFrames by the frame they are attached to: a Frame keeps no list of its children, so that deleting a
+// PhysicsFrame can re-root the PhysicsFrames attached to it instead of leaving them a dangling parent.
+std::unordered_multimap<const iFrame*, PhysicsFrame*>& children() {
+    static std::unordered_multimap<const iFrame*, PhysicsFrame*> all;
+    return all;
+}
+void unlistChild(const iFrame* parent, PhysicsFrame* child) {
+    auto range = children().equal_range(parent);
+    for (auto it = range.first; it != range.second; ++it)
+        if (it->second == child) {
+            children().erase(it);
+            return;
+        }
+}
+} // namespace
 
 class PhysicsFrame final : public iPhysicsFrame {
 public:
@@ -63,13 +84,26 @@ public:
         }
         m_body->adoptFrameEdits(); // moves the game made to either frame count before the bodies link
         if (pf) pf->m_body->adoptFrameEdits();
+        if (m_parent) unlistChild(m_parent, this);
         Frame::attachTo(parent);
+        if (m_parent) children().emplace(m_parent, this);
         d.attachTo(pf ? &pf->m_body->getDynamics() : nullptr);
         m_body->attach(this); // T re-expressed against the new parent, at the body's pose
     }
     void suspend() const override {}
     void release() const override {}
+    // Deleting a PhysicsFrame first is safe for what it can know of: PhysicsFrames attached to it become root
+    // frames at their world pose (their bodies stay attached to this one's until it is gone), and bodies
+    // bound to it with attach() let go of it. Plain frames attached to it cannot be told (README).
     void Delete() const override {
+        auto* self = const_cast<PhysicsFrame*>(this);
+        if (m_parent) unlistChild(m_parent, self);
+        std::vector<PhysicsFrame*> kids;
+        auto range = children().equal_range(this);
+        for (auto it = range.first; it != range.second; ++it) kids.push_back(it->second);
+        children().erase(this);
+        for (PhysicsFrame* k : kids) k->Frame::attachTo(nullptr);
+        RigidBody::frameDeleted(this);
         m_body->setOwner(nullptr);
         m_body->Delete(); // unbinds this frame now, even when the deletion itself is deferred
         delete this;

@@ -13,41 +13,8 @@
 namespace physics {
 
 namespace {
-// Scenes alive, in creation order: the last one is the active scene.
-std::vector<PhysicsScene*>& scenes() {
-    static std::vector<PhysicsScene*> all;
-    return all;
-}
 constexpr int MAX_STEP_RATE = 10000;
 } // namespace
-
-PhysicsScene* PhysicsScene::active() { return scenes().empty() ? nullptr : scenes().back(); }
-
-PhysicsScene::PhysicsScene() { scenes().push_back(this); }
-
-PhysicsScene::~PhysicsScene() {
-    scenes().erase(std::remove(scenes().begin(), scenes().end(), this), scenes().end());
-    // Every body leaves the scene first, so that none calls back into it while being deleted. Bodies owned
-    // by a PhysicsFrame, and bodies being removed, survive: their owners delete them.
-    std::vector<RigidBody*> bodies;
-    bodies.swap(m_bodies);
-    m_byDynamics.clear();
-    for (RigidBody* b : bodies) b->setScene(nullptr);
-    for (RigidBody* b : bodies) {
-        if (b->dying() || (!b->owner() && !b->pendingRemoval))
-            b->destroy();
-        else
-            b->pendingRemoval = false;
-    }
-}
-
-void PhysicsScene::Delete() const {
-    if (m_busy) { // from a callback inside update(): finish the step first
-        m_deleteRequested = true;
-        return;
-    }
-    delete this;
-}
 
 // --- bodies ---
 
@@ -69,6 +36,10 @@ bool PhysicsScene::add(iRigidBody* o) {
     }
     if (b->dying()) {
         error(L"PhysicsScene::add: the body is being deleted");
+        return false;
+    }
+    if (m_deleteRequested) {
+        error(L"PhysicsScene::add: this scene is being deleted; refused");
         return false;
     }
     if (b->scene() == this) {
@@ -108,37 +79,13 @@ void PhysicsScene::remove(const iRigidBody* o) {
     b->setScene(nullptr);
 }
 
-void PhysicsScene::forget(RigidBody* b) {
-    b->setAsleep(false); // out of the scene, nobody would wake it
-    m_bodies.erase(std::remove(m_bodies.begin(), m_bodies.end(), b), m_bodies.end());
-    m_byDynamics.erase(&b->getDynamics());
-    m_deferredDeletes.erase(std::remove(m_deferredDeletes.begin(), m_deferredDeletes.end(), b),
-                            m_deferredDeletes.end());
-}
-
-void PhysicsScene::flushDeferred() {
-    while (!m_deferredDeletes.empty()) {
-        RigidBody* b = m_deferredDeletes.back();
-        b->destroy(); // forget() takes it off m_deferredDeletes
-    }
-    for (size_t i = 0; i < m_bodies.size();) {
-        RigidBody* b = m_bodies[i];
-        if (!b->pendingRemoval) {
-            ++i;
-            continue;
-        }
-        b->pendingRemoval = false;
-        forget(b);
-        b->setScene(nullptr);
-    }
-    m_updaters.erase(std::remove(m_updaters.begin(), m_updaters.end(), nullptr), m_updaters.end());
-}
-
 // --- settings ---
 
 void PhysicsScene::setNewGlobalCollisionSpace(iCollisionSpace* cs) {
-    // The game must call this with nullptr before deleting the space.
+    // Deleting the space later is safe: the scene hears of it (onSpaceDestroyed) and forgets it.
     m_space = cs;
+    ++m_spaceVersion; // contacts gathered from the old space are not resolved
+
     setDefaultCollisionSpace(cs);
 }
 
@@ -230,6 +177,11 @@ void PhysicsScene::reset(int now) {
 }
 
 void PhysicsScene::update(int now) {
+    if (updating()) { // from a callback: this or another scene is mid-step, its lists are being walked
+        error(L"PhysicsScene::update: called from inside a scene update (a fixed updater, force generator or "
+              L"listener); refused");
+        return;
+    }
     if (m_suspended || !m_hasTimeBase || now < m_lastNow) {
         // Nothing to integrate: suspended, the first update, or the clock went back (re-based, not replayed).
         m_lastNow = now;
@@ -248,13 +200,13 @@ void PhysicsScene::update(int now) {
     m_lastNow = now;
     const float dt = 1.0f / float(m_stepRate);
     int steps = 0;
-    m_busy = true;
+    beginSteps();
     while (m_accumulator >= 1000 && steps < m_maxSteps && !m_deleteRequested) {
         m_accumulator -= 1000;
         step(dt);
         ++steps;
     }
-    m_busy = false;
+    endSteps();                  // scenes deleted from callbacks meanwhile are deleted now
     if (m_accumulator >= 1000) { // the catch-up cap: drop the backlog, keep the partial step
         m_dropped += m_accumulator / 1000;
         m_accumulator %= 1000;
@@ -274,6 +226,7 @@ void PhysicsScene::update(int now) {
 
 void PhysicsScene::writeFrames(float alpha) {
     const unsigned long long round = RigidBody::newFrameRound(); // parents' frames before their children's
+    RigidBody::PoseCache poses;                                  // no game code runs while frames are written
     for (RigidBody* b : m_bodies)
         if (!b->dying() && !b->pendingRemoval) b->writeFrameAfterParent(alpha, round);
 }
@@ -285,33 +238,41 @@ void PhysicsScene::step(float dt) {
     runFixedUpdaters(dt);
 
     // 2. Take in the game's edits: a written pose or a moved frame teleports the body; an invalid state is
-    // reported and
-    //    replaced by the body's last valid one; a sleeping body the game touched wakes. The pose now is where
-    //    this step's interpolation starts. An inertia tensor the engine derives catches up with the mass and
-    //    com the game may have written (RBDynamics.h); integrateComposite then keeps the angular velocity.
+    //    reported and replaced by the body's last valid one; a sleeping body the game touched wakes. The pose
+    //    now is where this step's interpolation starts. An inertia tensor the engine derives catches up with
+    //    the mass and com the game may have written (RBDynamics.h); integrateComposite then keeps the angular
+    //    velocity.
     for (size_t i = 0; i < m_bodies.size(); ++i) {
         RigidBody* b = m_bodies[i];
         if (b->dying() || b->pendingRemoval) continue;
         b->getDynamics().updateInertia();
-        if (b->asleep() && !b->editedWhileAsleep()) {
-            b->recordPreviousPose();
-            continue;
-        }
+        if (b->asleep() && !b->editedWhileAsleep()) continue;
         b->setAsleep(false); // before the space looks: its pairs are tested again
         b->adoptFrameEdits();
-        if (b->movedByGame()) b->getDynamics().markTeleported(); // spaces do not sweep across it
-        if (b->validate("before a step")) b->snapshotValid();    // the game's valid edits are kept on failure
-        b->recordPreviousPose();
+        if (b->validate("before a step")) b->snapshotValid(); // the game's valid edits are kept on failure
+    }
+    { // After every edit is in (a root's adopted frame moves its chain): world poses, O(1) a body.
+        RigidBody::PoseCache poses;
+        for (RigidBody* b : m_bodies)
+            if (!b->dying() && !b->pendingRemoval) {
+                if (b->movedByGame()) b->getDynamics().markTeleported(); // spaces do not sweep across it
+                b->recordPreviousPose();
+            }
     }
 
     // 3. Contacts at the step's starting poses. Listeners hear of them after the steps (HitWall, once per
     //    frame), or now with a space that cannot hold its events; they may delete things.
     const CollisionContact* contacts = nullptr;
     size_t contactCount = 0;
-    if (m_space) {
-        m_space->populateContactList(dt);
-        contacts = m_space->getContactList();
-        contactCount = m_space->getNumContacts();
+    const unsigned spaceVersion = m_spaceVersion;
+    if (iCollisionSpace* space = m_space) {
+        space->populateContactList(dt);
+        // A listener may have replaced this scene's space meanwhile (a notifying space cannot be deleted,
+        // so `space` is alive): then its contacts are not this scene's any more.
+        if (m_spaceVersion == spaceVersion) {
+            contacts = space->getContactList();
+            contactCount = space->getNumContacts();
+        }
     }
 
     // 4. Islands of touching bodies: a sleeping body touched by an awake one wakes with its island.
@@ -329,7 +290,13 @@ void PhysicsScene::step(float dt) {
 
     // 6. Resolve contacts: impulses on the velocities the forces produced, the touched bodies advanced from
     //    the step's start with the solved velocities, then leftover overlap pushed out.
-    if (contactCount > 0) resolveContacts(contacts, contactCount, dt);
+    //    Force generators may have deleted or replaced the space (its contact list went with it) or
+    //    deleted geometry (the space dropped its contacts): the list is read again.
+    if (contactCount > 0 && m_space && m_spaceVersion == spaceVersion) {
+        contacts = m_space->getContactList();
+        contactCount = m_space->getNumContacts();
+        if (contactCount > 0) resolveContacts(contacts, contactCount, dt);
+    }
 
     // 6b. Continuous collision: a body whose motion passed into or through something goes back to where it
     //     first touched it; the next step resolves that contact (ContinuousStage.h).
@@ -340,7 +307,11 @@ void PhysicsScene::step(float dt) {
         RigidBody* b = m_bodies[i];
         if (b->dying() || b->pendingRemoval || b->asleep()) continue;
         if (b->validate("after a step")) b->snapshotValid();
-        b->recordStepPose();
+    }
+    {
+        RigidBody::PoseCache poses;
+        for (RigidBody* b : m_bodies)
+            if (!b->dying() && !b->pendingRemoval && !b->asleep()) b->recordStepPose();
     }
 
     // 8. Islands that rested long enough fall asleep.

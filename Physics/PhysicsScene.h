@@ -2,6 +2,9 @@
 // the one step function (PhysicsScene::step) that reads top to bottom.
 //
 // The active scene (the one CreateRigidBody adds to) is the most recently created scene not yet deleted.
+// Lifetimes (SceneLifetime.cpp): one scene update runs at a time; while it steps, every deletion of a body or
+// a scene (whichever scene it belongs to) waits for the end of the step or the update, so nothing the step
+// is walking is freed under it.
 #pragma once
 
 #include "Composite.h"
@@ -30,6 +33,8 @@ public:
     PhysicsScene(const PhysicsScene&) = delete;
     PhysicsScene& operator=(const PhysicsScene&) = delete;
     static PhysicsScene* active();
+    // The scene whose update is taking steps now (callbacks may be running), or nullptr.
+    static PhysicsScene* updating();
 
     // --- iPhysicsScene ---
     bool add(iRigidBody* o) override;
@@ -71,6 +76,7 @@ public:
 
     // --- the bodies' side ---
     bool busy() const { return m_busy; } // inside update(): removals and deletions are deferred
+    // b (of any scene, or of none) is deleted at the end of this scene's current step.
     void deferDelete(RigidBody* b) { m_deferredDeletes.push_back(b); }
     void forget(RigidBody* b); // b is being destroyed now: drop every reference to it
     // The body of this scene whose dynamics d is, or nullptr.
@@ -90,14 +96,20 @@ private:
     // scene delivers them after the steps (PhysicsSceneContacts.cpp).
     void holdCollisionEvents();
     void deliverCollisionEvents();
+    void beginSteps();
+    void endSteps();
+    void leaveRegistry(); // no longer the active scene or a candidate for it
+    static void onSpaceDestroyed(const iCollisionSpace* dying, void* self);
     void writeFrames(float alpha);
     RigidBody* sceneBody(const iRigidBody* o) const; // o if it is one of this scene's bodies, else nullptr
 
     std::vector<RigidBody*> m_bodies;
     std::unordered_map<const RBDynamics*, RigidBody*> m_byDynamics;
     std::vector<RigidBody*> m_deferredDeletes;
-    std::vector<iFixedUpdater*> m_updaters; // nullptr: removed during a step, compacted after it
+    std::vector<iFixedUpdater*> m_updaters;      // nullptr: removed during a step, compacted after it
+    std::vector<PhysicsScene*> m_deferredScenes; // deleted from callbacks of this scene's update
     iCollisionSpace* m_space = nullptr;
+    unsigned m_spaceVersion = 0; // changes whenever m_space does (its contact list is then gone)
 
     Vector m_gravity = Vector(0, -9.81f, 0);
     int m_stepRate = 60;

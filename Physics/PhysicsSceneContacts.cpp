@@ -21,10 +21,10 @@ void PhysicsScene::holdCollisionEvents() {
 void PhysicsScene::deliverCollisionEvents() {
     iCollisionEvents* events = m_space ? eventsOf(m_space) : nullptr;
     if (!events) return;
-    m_busy = true; // listeners may delete bodies: deferred as in a step
+    beginSteps(); // listeners may delete bodies and scenes, or call update(): as in a step
     events->deliverEvents();
-    m_busy = false;
     flushDeferred();
+    endSteps();
 }
 
 bool PhysicsScene::setSolverIterations(int n) {

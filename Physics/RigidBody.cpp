@@ -10,12 +10,42 @@
 #include <algorithm>
 #include <cstring>
 #include <string>
+#include <unordered_map>
 
 namespace physics {
 
+namespace {
+// Which bodies are bound to which frame (only looked up when a PhysicsFrame is deleted).
+std::unordered_multimap<const iFrame*, RigidBody*>& bindings() {
+    static std::unordered_multimap<const iFrame*, RigidBody*> all;
+    return all;
+}
+} // namespace
+
+void RigidBody::bindFrame(iFrame* o) {
+    if (m_frame == o) return;
+    if (m_frame) {
+        auto range = bindings().equal_range(m_frame);
+        for (auto it = range.first; it != range.second; ++it)
+            if (it->second == this) {
+                bindings().erase(it);
+                break;
+            }
+    }
+    m_frame = o;
+    if (o) bindings().emplace(o, this);
+}
+
+void RigidBody::frameDeleted(const iFrame* f) {
+    std::vector<RigidBody*> bound;
+    auto range = bindings().equal_range(f);
+    for (auto it = range.first; it != range.second; ++it) bound.push_back(it->second);
+    for (RigidBody* b : bound) b->bindFrame(nullptr);
+}
+
 RigidBody::RigidBody(iFrame* frame) {
     // A new body starts where its frame is (the game usually positions the frame first).
-    m_frame = frame;
+    bindFrame(frame);
     if (frame) {
         m_dyn.orientation = frameWorldRotation(frame);
         m_dyn.position = frame->position() + m_dyn.orientation.direction(m_dyn.com);
@@ -27,6 +57,7 @@ RigidBody::RigidBody(iFrame* frame) {
 }
 
 RigidBody::~RigidBody() {
+    bindFrame(nullptr);
     // Collision spaces unbind their geometries from this body before it goes (iRigidBody.h).
     rigidBodyDestroyed(this);
     // m_dyn's destructor then releases any bodies attached to this one (they keep their world pose).
@@ -49,7 +80,7 @@ iRigidBody* RigidBody::clone() const {
 void RigidBody::attach(iFrame* o) {
     if (m_dying) return;
     // The frame follows this body from now on: it is moved to the body's pose at once.
-    m_frame = o;
+    bindFrame(o);
     if (o) {
         m_writtenWorld = o->world(); // not a game edit to adopt: the body's pose wins
         recordPreviousPose();
@@ -86,13 +117,12 @@ void RigidBody::Delete() const {
         error(L"RigidBody::Delete: this body belongs to a PhysicsFrame; delete the PhysicsFrame instead");
         return;
     }
-    if (m_scene && m_scene->busy()) {
-        // Inside a step (a fixed updater, a force generator, a listener): the step still walks the body
-        // list, so only mark it; the scene deletes it when the step ends. The frame is unbound now because
-        // the game may delete the frame right after this call.
-        self->m_dying = true;
-        self->m_frame = nullptr;
-        m_scene->deferDelete(self);
+    if (PhysicsScene* stepping = PhysicsScene::updating()) {
+        // Inside a step (a fixed updater, a force generator, a listener): the step still walks its bodies,
+        // and its composites may hold this body even when it is in another scene or none. So only mark it;
+        // the stepping scene deletes it when the step ends.
+        self->markDying();
+        stepping->deferDelete(self);
         return;
     }
     self->destroy();
@@ -127,6 +157,7 @@ void RigidBody::adoptFrameEdits() {
     }
     m_dyn.orientation = frameWorldRotation(m_frame);
     m_dyn.position = w.position() + m_dyn.orientation.direction(m_dyn.com);
+    invalidatePoses(); // bodies attached to this one moved too
     m_writtenWorld = w;
     recordPreviousPose(); // a teleport: nothing to interpolate across
 }
@@ -142,18 +173,19 @@ bool RigidBody::validate(const char* when) {
     msg += L"); the body is restored to its last valid state";
     error(msg.c_str());
     m_dyn = m_lastValid; // operator= keeps the attachment links
+    invalidatePoses();
     return false;
 }
 
 void RigidBody::recordPreviousPose() {
-    m_prevPosition = m_dyn.getWorldPosition();
-    m_prevRotation = toQuat(m_dyn.getWorldOrientation());
+    m_prevPosition = worldPosition();
+    m_prevRotation = toQuat(worldOrientation());
     projectedBy = Vector();
 }
 
 void RigidBody::recordStepPose() {
-    m_stepPosition = m_dyn.getWorldPosition();
-    m_stepOrientation = m_dyn.getWorldOrientation();
+    m_stepPosition = worldPosition();
+    m_stepOrientation = worldOrientation();
 }
 
 bool RigidBody::editedWhileAsleep() const {
@@ -165,7 +197,7 @@ bool RigidBody::editedWhileAsleep() const {
 }
 
 bool RigidBody::movedByGame() const {
-    return m_dyn.getWorldPosition() != m_stepPosition || m_dyn.getWorldOrientation() != m_stepOrientation;
+    return worldPosition() != m_stepPosition || worldOrientation() != m_stepOrientation;
 }
 
 void RigidBody::writeFrame(float alpha) {
@@ -178,8 +210,8 @@ void RigidBody::writeFrame(float alpha) {
         recordStepPose();
     }
     // Drawn pose = previous step's pose blended towards the current one: position lerp, orientation slerp.
-    Vector cur = m_dyn.getWorldPosition();
-    Quat q = m_prevRotation.slerp(alpha, toQuat(m_dyn.getWorldOrientation()));
+    Vector cur = worldPosition();
+    Quat q = m_prevRotation.slerp(alpha, toQuat(worldOrientation()));
     Vector p = m_prevPosition + (cur - m_prevPosition) * alpha;
     Matrix r = toOrientation(q.normalized());
     setFrameWorldPose(m_frame, r, p - r.direction(m_dyn.com));

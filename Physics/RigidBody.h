@@ -54,6 +54,15 @@ public:
     iPhysicsFrame* owner() const { return m_owner; }
     void setOwner(iPhysicsFrame* f) { m_owner = f; }
     bool dying() const { return m_dying; }
+    // Queued for deletion (by Delete() or its scene's): skipped by the steps, and its frame let go at once
+    // (the game may delete the frame right after the call that queued the body).
+    void markDying() {
+        m_dying = true;
+        bindFrame(nullptr);
+    }
+    // A PhysicsFrame is being deleted: every body bound to it lets go of it (a course framework's Frame
+    // cannot say so; see iRigidBody::attach).
+    static void frameDeleted(const iFrame* f);
     // Deletes now (the scene calls it when flushing deferred deletions, or Delete() outside a step).
     void destroy();
     std::vector<iForceGenerator*>& generators() { return m_generators; }
@@ -82,6 +91,19 @@ public:
     // path: the continuous stage sweeps from the start pose moved by it).
     Vector projectedBy;
 
+    // The world pose of this body's COM and its world orientation. While a PoseCache is alive each body's is
+    // computed once, from its parent's (O(1) a body, where RBDynamics::getWorldPosition is O(depth)): the
+    // scene opens one around the loops that read every body's pose and run no game code (WorldPoseCache.cpp).
+    Vector worldPosition() const;
+    Matrix worldOrientation() const;
+    struct PoseCache {
+        PoseCache();
+        ~PoseCache();
+        PoseCache(const PoseCache&) = delete;
+        PoseCache& operator=(const PoseCache&) = delete;
+    };
+    static void invalidatePoses(); // a body's pose changed: cached poses are recomputed
+
     // Sleeping: a body (island) at rest for a while stops being integrated until something wakes it. The
     // state is RBDynamics::sleeping itself, so the collision space sees it without any copying.
     bool asleep() const { return m_dyn.sleeping; }
@@ -108,7 +130,7 @@ public:
 
 private:
     ~RigidBody();
-    void bindFrame(iFrame* o);
+    void bindFrame(iFrame* o); // sets m_frame, keeping the index of bindings frameDeleted reads
 
     RBDynamics m_dyn;
     RBDynamics m_lastValid;
@@ -121,6 +143,10 @@ private:
     iPhysicsFrame* m_owner = nullptr;
     bool m_dying = false;
     unsigned long long m_frameRound = 0;
+    void cacheWorldPose() const;
+    mutable unsigned long long m_poseRound = 0; // the cache round m_worldPos and m_worldRot belong to
+    mutable Vector m_worldPos;
+    mutable Matrix m_worldRot = Matrix(1);
     Vector m_prevPosition, m_stepPosition;
     Quat m_prevRotation = Quat::Identity();
     Matrix m_stepOrientation = Matrix(1);

@@ -13,6 +13,8 @@ set(GUARDIAN_PHYSICS_SOURCES
   PhysicsFrame.cpp
   PhysicsScene.cpp
   PhysicsSceneContacts.cpp
+  SceneLifetime.cpp
+  WorldPoseCache.cpp
   RigidBody.cpp
   ShockPropagation.cpp)
 set(GUARDIAN_PHYSICS_HEADERS

@@ -8,20 +8,15 @@
 #include "iCSphere.h"
 #include "iUtilities.h"
 
+#include "ErrorRecorder.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <limits>
 
 namespace {
-struct Quiet {
-    static void handler(const wchar_t*) {}
-    Quiet() : previous(setErrorHandler(&handler)), start(errorCount()) {}
-    ~Quiet() { setErrorHandler(previous); }
-    unsigned long count() const { return errorCount() - start; }
-    ErrorHandler previous;
-    unsigned long start;
-};
+using Quiet = guardian_test::ErrorRecorder; // tests/ErrorRecorder.h
 } // namespace
 
 // Half extents and radii above MAX_SHAPE_SIZE (1e6 m) are refused with error(); the old size is kept.

@@ -1,34 +1,17 @@
-// PhysicsTestSupport.h - shared helpers of the simulator tests: a scene that deletes itself, a quiet error
+// PhysicsTestSupport.h - shared helpers of the simulator tests: a scene that deletes itself, the shared error
 // recorder, and running the scene for a given time in fixed-size frames.
 #pragma once
 
+#include "ErrorRecorder.h"
 #include "RBDynamics.h"
 #include "iPhysicsScene.h"
 #include "iPhysicsSceneSettings.h"
 #include "iRigidBody.h"
 #include "iUtilities.h"
 
-#include <string>
-
 namespace physics_test {
 
-// Records refused input instead of printing it.
-struct ErrorRecorder {
-    static std::wstring& last() {
-        static std::wstring s;
-        return s;
-    }
-    static void handler(const wchar_t* m) { last() = m; }
-    ErrorRecorder() : m_previous(setErrorHandler(&handler)), m_start(errorCount()) { last().clear(); }
-    ~ErrorRecorder() { setErrorHandler(m_previous); }
-    ErrorRecorder(const ErrorRecorder&) = delete;
-    ErrorRecorder& operator=(const ErrorRecorder&) = delete;
-    unsigned long count() const { return errorCount() - m_start; }
-
-private:
-    ErrorHandler m_previous;
-    unsigned long m_start;
-};
+using guardian_test::ErrorRecorder; // tests/ErrorRecorder.h
 
 // A scene for one test: created with the given rate and integrator, deleted (with its bodies) at the end.
 struct SceneHolder {

@@ -6,6 +6,8 @@
 #include "iCollisionGeometry.h"
 #include "iUtilities.h"
 
+#include "ErrorRecorder.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -15,14 +17,7 @@
 using namespace resolution_test;
 
 namespace {
-struct Quiet {
-    static void handler(const wchar_t*) {}
-    Quiet() : previous(setErrorHandler(&handler)), start(errorCount()) {}
-    ~Quiet() { setErrorHandler(previous); }
-    unsigned long count() const { return errorCount() - start; }
-    ErrorHandler previous;
-    unsigned long start;
-};
+using Quiet = guardian_test::ErrorRecorder; // tests/ErrorRecorder.h
 } // namespace
 
 // Restitution 50 sent a ball dropped from 2 m to 1,089 m. Refused at the next step (the body is restored to

@@ -1,0 +1,123 @@
+// SceneLifetime.cpp - how scenes come and go: the registry of live scenes (the active one), the one update
+// running at a time, deletions deferred while it steps, and forgetting a collision space that is deleted.
+//
+// Why deletions wait for the end of a step: a callback (fixed updater, force generator, listener) may delete
+// a body or a scene while the step is walking bodies, composites or contacts, and a composite may hold
+// bodies of another scene (attachment chains cross scenes). So while any scene steps, every body deletion
+// (whatever its scene) is queued on the stepping scene and done at the end of the step, and every scene
+// deletion at the end of the update. An update() from inside a callback is refused: it would walk the same
+// lists.
+#include "PhysicsScene.h"
+
+#include "RigidBody.h"
+#include "iCollisionSpace.h"
+#include "iUtilities.h"
+
+#include <algorithm>
+
+namespace physics {
+
+namespace {
+// Scenes alive and not being deleted, in creation order: the last one is the active scene.
+std::vector<PhysicsScene*>& scenes() {
+    static std::vector<PhysicsScene*> all;
+    return all;
+}
+PhysicsScene* s_updating = nullptr;
+} // namespace
+
+PhysicsScene* PhysicsScene::active() { return scenes().empty() ? nullptr : scenes().back(); }
+PhysicsScene* PhysicsScene::updating() { return s_updating; }
+
+PhysicsScene::PhysicsScene() {
+    scenes().push_back(this);
+    watchCollisionSpaces(&PhysicsScene::onSpaceDestroyed, this);
+}
+
+void PhysicsScene::leaveRegistry() {
+    scenes().erase(std::remove(scenes().begin(), scenes().end(), this), scenes().end());
+}
+
+PhysicsScene::~PhysicsScene() {
+    unwatchCollisionSpaces(&PhysicsScene::onSpaceDestroyed, this);
+    leaveRegistry();
+    // Every body leaves the scene first, so that none calls back into it while being deleted. Bodies owned
+    // by a PhysicsFrame, and bodies being removed, survive: their owners delete them.
+    std::vector<RigidBody*> bodies;
+    bodies.swap(m_bodies);
+    m_byDynamics.clear();
+    for (RigidBody* b : bodies) b->setScene(nullptr);
+    for (RigidBody* b : bodies) {
+        if (b->dying() || (!b->owner() && !b->pendingRemoval))
+            b->destroy();
+        else
+            b->pendingRemoval = false;
+    }
+}
+
+void PhysicsScene::Delete() const {
+    auto* self = const_cast<PhysicsScene*>(this);
+    if (m_deleteRequested) return; // already going
+    PhysicsScene* stepping = updating();
+    if (!stepping) {
+        delete this;
+        return;
+    }
+    // From a callback: deleted when the update ends. Until then it is no longer the active scene, takes no
+    // bodies, and the bodies it will delete let go of their frames now: the game may delete those frames
+    // right after this call, and the step must not write them.
+    m_deleteRequested = true;
+    self->leaveRegistry();
+    for (RigidBody* b : m_bodies)
+        if (b->dying() || (!b->owner() && !b->pendingRemoval)) b->markDying();
+    if (stepping != this) stepping->m_deferredScenes.push_back(self);
+}
+
+void PhysicsScene::beginSteps() {
+    m_busy = true;
+    s_updating = this;
+}
+
+void PhysicsScene::endSteps() {
+    m_busy = false;
+    s_updating = nullptr;
+    std::vector<PhysicsScene*> doomed;
+    doomed.swap(m_deferredScenes);
+    for (PhysicsScene* s : doomed) delete s;
+}
+
+void PhysicsScene::forget(RigidBody* b) {
+    b->setAsleep(false); // out of the scene, nobody would wake it
+    m_bodies.erase(std::remove(m_bodies.begin(), m_bodies.end(), b), m_bodies.end());
+    m_byDynamics.erase(&b->getDynamics());
+    m_deferredDeletes.erase(std::remove(m_deferredDeletes.begin(), m_deferredDeletes.end(), b),
+                            m_deferredDeletes.end());
+}
+
+void PhysicsScene::flushDeferred() {
+    while (!m_deferredDeletes.empty()) {
+        RigidBody* b = m_deferredDeletes.back();
+        m_deferredDeletes.pop_back(); // b may be another scene's: its forget() does not touch this list
+        b->destroy();
+    }
+    for (size_t i = 0; i < m_bodies.size();) {
+        RigidBody* b = m_bodies[i];
+        if (!b->pendingRemoval) {
+            ++i;
+            continue;
+        }
+        b->pendingRemoval = false;
+        forget(b);
+        b->setScene(nullptr);
+    }
+    m_updaters.erase(std::remove(m_updaters.begin(), m_updaters.end(), nullptr), m_updaters.end());
+}
+
+void PhysicsScene::onSpaceDestroyed(const iCollisionSpace* dying, void* self) {
+    auto* scene = static_cast<PhysicsScene*>(self);
+    if (scene->m_space != dying) return;
+    scene->m_space = nullptr; // as if setNewGlobalCollisionSpace(nullptr): the bodies stop colliding
+    ++scene->m_spaceVersion;
+}
+
+} // namespace physics
