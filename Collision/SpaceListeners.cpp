@@ -66,9 +66,13 @@ void SimpleCollisionSpace::notifyListeners(std::vector<Notice>& notices) {
 
 void SimpleCollisionSpace::finishNotifications() {
     if (m_pendingRemove.empty() && m_pendingDelete.empty()) {
-        // Bodies may still have died or been rebound: binding resets hasPrevious, which populate set.
+        // Bodies may still have died or been rebound: binding resets hasPrevious, which populate set. (The
+        // contacts name only geometry still here; this call's entries may be stale when events are delivered
+        // later.)
         bool changed = false;
-        for (const Entry& e : m_entries) changed = changed || !e.g->spaceState().hasPrevious;
+        for (const CollisionContact& c : m_contacts)
+            changed = changed || !CollisionGeometry::from(c.g1)->spaceState().hasPrevious ||
+                      !CollisionGeometry::from(c.g2)->spaceState().hasPrevious;
         if (!changed) return;
     }
     size_t keep = 0;
