@@ -2,6 +2,7 @@
 // points each), last step's points that came apart by a hair kept, and each point matched with last step's
 // point at the same place so that it starts from that point's impulses (warm starting).
 #include "ContactSolver.h"
+#include "SolverRows.h"
 
 #include "MathEigen.h"
 #include "RBDynamics.h"
@@ -19,9 +20,6 @@ namespace {
 // static world's are world points.
 Vec3 localAnchor(const SolverBody& b, const Vec3& world) {
     return b.root ? Vec3(b.startRotation.conjugate() * (world - b.startOrigin)) : world;
-}
-Vec3 startPoint(const SolverBody& b, const Vec3& anchor) {
-    return b.root ? Vec3(b.startRotation * anchor + b.startOrigin) : anchor;
 }
 } // namespace
 

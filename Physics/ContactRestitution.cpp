@@ -27,12 +27,6 @@
 
 namespace physics {
 
-namespace {
-Vec3 startPoint(const SolverBody& b, const Vec3& anchor) {
-    return b.root ? Vec3(b.startRotation * anchor + b.startOrigin) : anchor;
-}
-} // namespace
-
 // p's rows and approachSpeed (v_n after this step's forces) are set.
 void ContactSolver::prepareBounce(const SolverBody& a, const SolverBody& b, ContactPoint& p, float dt) {
     p.forceSpeed = p.normal.dot(b.dv - a.dv) + p.armB[0].dot(b.dw) - p.armA[0].dot(a.dw);

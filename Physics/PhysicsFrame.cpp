@@ -84,9 +84,10 @@ public:
         }
         m_body->adoptFrameEdits(); // moves the game made to either frame count before the bodies link
         if (pf) pf->m_body->adoptFrameEdits();
-        if (m_parent) unlistChild(m_parent, this);
+        if (m_listedUnder) unlistChild(m_listedUnder, this);
         Frame::attachTo(parent);
-        if (m_parent) children().emplace(m_parent, this);
+        m_listedUnder = parent;
+        if (parent) children().emplace(parent, this);
         d.attachTo(pf ? &pf->m_body->getDynamics() : nullptr);
         m_body->attach(this); // T re-expressed against the new parent, at the body's pose
     }
@@ -97,12 +98,15 @@ public:
     // bound to it with attach() let go of it. Plain frames attached to it cannot be told (README).
     void Delete() const override {
         auto* self = const_cast<PhysicsFrame*>(this);
-        if (m_parent) unlistChild(m_parent, self);
+        if (m_listedUnder) unlistChild(m_listedUnder, self);
         std::vector<PhysicsFrame*> kids;
         auto range = children().equal_range(this);
         for (auto it = range.first; it != range.second; ++it) kids.push_back(it->second);
         children().erase(this);
-        for (PhysicsFrame* k : kids) k->Frame::attachTo(nullptr);
+        for (PhysicsFrame* k : kids) {
+            k->Frame::attachTo(nullptr);
+            k->m_listedUnder = nullptr;
+        }
         RigidBody::frameDeleted(this);
         m_body->setOwner(nullptr);
         m_body->Delete(); // unbinds this frame now, even when the deletion itself is deferred
@@ -112,6 +116,9 @@ public:
 private:
     ~PhysicsFrame() override = default;
     RigidBody* m_body;
+    // The frame this one is listed under in children(): the course framework's Frame does not expose its
+    // parent to a derived class.
+    iFrame* m_listedUnder = nullptr;
 };
 
 } // namespace physics

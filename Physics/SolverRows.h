@@ -33,6 +33,11 @@ inline void applyImpulse(SolverBody& a, SolverBody& b, const ContactPoint& p, fl
     b.w += impulse * p.turnB[Row];
 }
 
+// Where an anchor was at the step's start, where the contacts were found.
+inline Vec3 startPoint(const SolverBody& b, const Vec3& anchor) {
+    return b.root ? Vec3(b.startRotation * anchor + b.startOrigin) : anchor;
+}
+
 // Where an anchor is now (the static world's anchors are world points).
 inline Vec3 worldPoint(const SolverBody& b, const Vec3& anchor) {
     return b.root ? Vec3(b.rotation * anchor + b.origin) : anchor;
