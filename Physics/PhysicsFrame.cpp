@@ -30,6 +30,13 @@ void unlistChild(const iFrame* parent, PhysicsFrame* child) {
             return;
         }
 }
+// The parent a frame has after attachTo(asked): the framework's answer where its frames tell their parent
+// (the stand-in's do, and it refuses a cycle), otherwise the one asked for (a course framework's attachTo
+// does not refuse).
+template <class F> auto parentAfterAttach(const F& f, iFrame*, int) -> decltype(f.parent()) {
+    return f.parent();
+}
+template <class F> iFrame* parentAfterAttach(const F&, iFrame* asked, long) { return asked; }
 } // namespace
 
 class PhysicsFrame final : public iPhysicsFrame {
@@ -86,8 +93,8 @@ public:
         if (pf) pf->m_body->adoptFrameEdits();
         if (m_listedUnder) unlistChild(m_listedUnder, this);
         Frame::attachTo(parent);
-        m_listedUnder = parent;
-        if (parent) children().emplace(parent, this);
+        m_listedUnder = parentAfterAttach(*this, parent, 0);
+        if (m_listedUnder) children().emplace(m_listedUnder, this);
         d.attachTo(pf ? &pf->m_body->getDynamics() : nullptr);
         m_body->attach(this); // T re-expressed against the new parent, at the body's pose
     }
