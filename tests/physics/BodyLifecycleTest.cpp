@@ -13,19 +13,11 @@
 #include <algorithm>
 #include <vector>
 
+using physics_test::DestroyLog;
 using physics_test::ErrorRecorder;
 using physics_test::SceneHolder;
 
 namespace {
-
-// Records every rigidBodyDestroyed notification (what a collision space relies on).
-struct DestroyLog {
-    std::vector<const iRigidBody*> dead;
-    static void note(const iRigidBody* b, void* self) { static_cast<DestroyLog*>(self)->dead.push_back(b); }
-    DestroyLog() { watchRigidBodies(&note, this); }
-    ~DestroyLog() { unwatchRigidBodies(&note, this); }
-    bool has(const iRigidBody* b) const { return std::find(dead.begin(), dead.end(), b) != dead.end(); }
-};
 
 struct NullListener final : iCollisionListener {
     void HitWall(iRigidBody*, Vector, Vector) override {}

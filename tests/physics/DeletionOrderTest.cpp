@@ -16,18 +16,11 @@
 #include <functional>
 #include <vector>
 
+using physics_test::DestroyLog;
 using physics_test::ErrorRecorder;
 using physics_test::SceneHolder;
 
 namespace {
-
-struct DestroyLog {
-    std::vector<const iRigidBody*> dead;
-    static void note(const iRigidBody* b, void* self) { static_cast<DestroyLog*>(self)->dead.push_back(b); }
-    DestroyLog() { watchRigidBodies(&note, this); }
-    ~DestroyLog() { unwatchRigidBodies(&note, this); }
-    bool has(const iRigidBody* b) const { return std::find(dead.begin(), dead.end(), b) != dead.end(); }
-};
 
 // Runs a function once, from the first call of whichever callback it is registered as.
 struct Once final : iFixedUpdater, iForceGenerator {

@@ -2,6 +2,8 @@
 // recorder, and running the scene for a given time in fixed-size frames.
 #pragma once
 
+#include <algorithm>
+
 #include "ErrorRecorder.h"
 #include "RBDynamics.h"
 #include "iPhysicsScene.h"
@@ -34,6 +36,15 @@ struct SceneHolder {
             scene->update(now);
         }
     }
+};
+
+// Records every rigidBodyDestroyed notification (what a collision space relies on).
+struct DestroyLog {
+    std::vector<const iRigidBody*> dead;
+    static void note(const iRigidBody* b, void* self) { static_cast<DestroyLog*>(self)->dead.push_back(b); }
+    DestroyLog() { watchRigidBodies(&note, this); }
+    ~DestroyLog() { unwatchRigidBodies(&note, this); }
+    bool has(const iRigidBody* b) const { return std::find(dead.begin(), dead.end(), b) != dead.end(); }
 };
 
 } // namespace physics_test
