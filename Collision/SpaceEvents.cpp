@@ -13,15 +13,26 @@
 
 namespace {
 
-// Keeps one notice of each geometry pair (the first one listed).
+// Keeps one notice of each geometry pair (the first one listed), in the order they were listed: the order
+// listeners hear them in must not depend on where the heap put the objects.
 void dropRepeats(std::vector<SimpleCollisionSpace::Notice>& notices) {
     using Notice = SimpleCollisionSpace::Notice;
-    auto key = [](const Notice& n) { return std::make_tuple(n.g1, n.g2, n.b1, n.b2); };
-    std::stable_sort(notices.begin(), notices.end(),
-                     [&key](const Notice& a, const Notice& b) { return std::less<>()(key(a), key(b)); });
-    notices.erase(std::unique(notices.begin(), notices.end(),
-                              [&key](const Notice& a, const Notice& b) { return key(a) == key(b); }),
-                  notices.end());
+    auto key = [&notices](size_t i) {
+        const Notice& n = notices[i];
+        return std::make_tuple(n.g1, n.g2, n.b1, n.b2);
+    };
+    std::vector<size_t> order(notices.size());
+    for (size_t i = 0; i < order.size(); ++i) order[i] = i;
+    std::sort(order.begin(), order.end(), [&key](size_t a, size_t b) {
+        return std::less<>()(key(a), key(b)) || (key(a) == key(b) && a < b);
+    });
+    std::vector<bool> repeat(notices.size(), false);
+    for (size_t k = 1; k < order.size(); ++k)
+        if (key(order[k]) == key(order[k - 1])) repeat[order[k]] = true;
+    size_t kept = 0;
+    for (size_t i = 0; i < notices.size(); ++i)
+        if (!repeat[i]) notices[kept++] = notices[i];
+    notices.resize(kept);
 }
 
 } // namespace

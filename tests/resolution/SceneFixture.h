@@ -2,6 +2,7 @@
 #pragma once
 
 #include "MathDefinitions.h"
+#include "RBDynamics.h"
 #include "World.h"
 #include "iPhysicsFrame.h"
 #include "iPhysicsScene.h"
@@ -44,7 +45,7 @@ public:
         steps(int(s * 60 + 0.5f), afterEach);
     }
 
-    // FNV-1a over the bits of every body's position and orientation.
+    // FNV-1a over the bits of every body's position, orientation, velocity, angular velocity and sleep flag.
     unsigned long long stateHash() const {
         unsigned long long h = 1469598103934665603ull;
         auto mix = [&h](const void* p, size_t n) {
@@ -52,8 +53,13 @@ public:
             for (size_t i = 0; i < n; ++i) h = (h ^ b[i]) * 1099511628211ull;
         };
         for (const iPhysicsFrame* f : world->bodies()) {
-            mix(&f->getDynamics()->position, sizeof(Vector));
-            mix(f->getDynamics()->orientation.data(), 16 * sizeof(float));
+            const RBDynamics* d = f->getDynamics();
+            mix(&d->position, sizeof(Vector));
+            mix(d->orientation.data(), 16 * sizeof(float));
+            mix(&d->velocity, sizeof(Vector));
+            mix(&d->angularVelocity, sizeof(Vector));
+            const unsigned char asleep = d->sleeping ? 1 : 0;
+            mix(&asleep, 1);
         }
         return h;
     }
