@@ -4,14 +4,16 @@
 // would break the game's own drawing code. Values are checked against hand-computed results.
 #include "MathDeclarations.h"
 #include "MathDefinitions.h"
+#include "MathExpect.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-namespace {
+using foundation_test::expectNear;
+using foundation_test::kPi;
 
-const float kPi = 3.14159265358979f;
+namespace {
 
 // Code shaped like a course design's drawing setup: colours, materials, a plane, a camera.
 struct DrawSetup {

@@ -1,21 +1,13 @@
 // FrameTest.cpp - frame hierarchies: world transforms through parents, and attaching that keeps the pose.
 #include "Frame.h"
+#include "MathExpect.h"
 
 #include <gtest/gtest.h>
 
 #include <limits>
 
-namespace {
-
-const float kPi = 3.14159265358979f;
-
-void expectNear(const Vector& a, const Vector& b, float tol) {
-    EXPECT_NEAR(a.x, b.x, tol);
-    EXPECT_NEAR(a.y, b.y, tol);
-    EXPECT_NEAR(a.z, b.z, tol);
-}
-
-} // namespace
+using foundation_test::expectNear;
+using foundation_test::kPi;
 
 TEST(Frame, GrandchildWorldPositionComposesThroughTheChain) {
     Frame root, child, grandchild;

@@ -1,10 +1,14 @@
 // MathTest.cpp - the Vector/Matrix shim against independent formulas (triple loops, trig, identities).
 #include "MathDefinitions.h"
+#include "MathExpect.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <random>
+
+using foundation_test::expectNear;
+using foundation_test::kPi;
 
 namespace {
 
@@ -16,16 +20,6 @@ Matrix randomMatrix() {
     for (int i = 0; i < 16; ++i) m.data()[i] = uniform(-3, 3);
     return m;
 }
-void expectNear(const Matrix& a, const Matrix& b, float tol) {
-    for (int r = 0; r < 4; ++r)
-        for (int c = 0; c < 4; ++c) EXPECT_NEAR(a(r, c), b(r, c), tol) << "element " << r << "," << c;
-}
-void expectNear(const Vector& a, const Vector& b, float tol) {
-    EXPECT_NEAR(a.x, b.x, tol);
-    EXPECT_NEAR(a.y, b.y, tol);
-    EXPECT_NEAR(a.z, b.z, tol);
-}
-const float kPi = 3.14159265358979f;
 
 } // namespace
 

@@ -98,7 +98,7 @@ list(LENGTH merged_files n)
 message(STATUS "${PACKAGE}: ${n} lines merged as INTEGRATION.md lists; the rest of the host is unchanged")
 
 # The host's own game builds and runs unchanged, now with the package inside, and so do the physics checks.
-execute_process(COMMAND ${CMAKE_COMMAND} -S "${template}/checks" -B "${WORK}/build" -DCMAKE_BUILD_TYPE=Debug
+execute_process(COMMAND ${CMAKE_COMMAND} -S "${template}/checks" -B "${WORK}/build" -DCMAKE_BUILD_TYPE=
                         -DCMAKE_UNITY_BUILD=ON -DHOST=${host} -DPACKAGE=${PACKAGE} RESULT_VARIABLE rc OUTPUT_QUIET)
 if(NOT rc EQUAL 0)
   message(FATAL_ERROR "the merged host did not configure")

@@ -11,7 +11,7 @@ if(NOT rc EQUAL 0)
   message(FATAL_ERROR "could not generate package ${PACKAGE}")
 endif()
 set(example "${WORK}/${PACKAGE}/example")
-execute_process(COMMAND ${CMAKE_COMMAND} -S "${example}" -B "${WORK}/build" -DCMAKE_BUILD_TYPE=Debug
+execute_process(COMMAND ${CMAKE_COMMAND} -S "${example}" -B "${WORK}/build" -DCMAKE_BUILD_TYPE=
                         -DCMAKE_UNITY_BUILD=ON "-DCMAKE_CXX_FLAGS=-Wall -Wextra -Wpedantic -Werror"
                         RESULT_VARIABLE rc OUTPUT_QUIET)
 if(NOT rc EQUAL 0)

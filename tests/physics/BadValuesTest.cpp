@@ -11,10 +11,10 @@
 #include <limits>
 
 using physics_test::ErrorRecorder;
+using physics_test::kG;
 using physics_test::SceneHolder;
 
 namespace {
-constexpr float kG = 9.81f;
 
 Matrix diagonal(float d) { return Matrix(d); } // 3x3 block d, m44 = 1
 } // namespace

@@ -10,11 +10,10 @@
 #include <cmath>
 
 using physics_test::ErrorRecorder;
+using physics_test::kG;
 using physics_test::SceneHolder;
 
 namespace {
-
-constexpr float kG = 9.81f;
 
 // A PhysicsFrame holding a small sphere (radius 0.1) of the given mass at p.
 iPhysicsFrame* ball(float mass, const Vector& p) {
@@ -28,7 +27,7 @@ iPhysicsFrame* ball(float mass, const Vector& p) {
 
 // Root A: 1 kg at the origin; child B: 3 kg at (2, 0, 0). Composite: 4 kg, centre C = (1.5, 0, 0), and
 // about z I = 0.4 * 0.01 * (1 + 3) + 1 * 1.5^2 + 3 * 0.5^2 = 3.016 kg m^2.
-constexpr float IZZ = 3.016f;
+constexpr float kPairIzz = 3.016f;
 
 struct Pair {
     iPhysicsFrame* child; // made first, so the scene meets it before its parent
@@ -119,10 +118,10 @@ TEST(PhysicsFrameAttachment, TorqueAndImpulseOnTheChildTurnTheComposite) {
     Pair hit(Vector(0, 0, 10));
     hit.child->attachTo(hit.root);
     hit.b().ApplyImpulse(Vector(0, 4, 0), Vector(2, 0, 10));
-    const float w = 0.5f * 4.0f / IZZ;
+    const float w = 0.5f * 4.0f / kPairIzz;
     EXPECT_NEAR(hit.a().angularVelocity.z, w, 1e-5f);
     h.run(17); // one step: the torque gives dw = tau dt / I_zz
-    EXPECT_NEAR(turned.a().angularVelocity.z, 6.0f / 60.0f / IZZ, 1e-6f);
+    EXPECT_NEAR(turned.a().angularVelocity.z, 6.0f / 60.0f / kPairIzz, 1e-6f);
     h.run(1000); // 60 more steps: 61 in all, t = 61 / 60 s after the impulse
     const float t = 61.0f / 60.0f;
     // B circles C (z is a principal axis, so w stays), and C moves up at 1 m/s.

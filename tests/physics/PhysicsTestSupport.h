@@ -15,6 +15,8 @@ namespace physics_test {
 
 using guardian_test::ErrorRecorder; // tests/ErrorRecorder.h
 
+constexpr float kG = 9.81f; // the scenes' default gravity (m/s^2)
+
 // A scene for one test: created with the given rate and integrator, deleted (with its bodies) at the end.
 struct SceneHolder {
     iPhysicsScene* scene;

@@ -9,11 +9,9 @@
 #include <gtest/gtest.h>
 
 using physics_test::ErrorRecorder;
+using physics_test::kG;
 using physics_test::SceneHolder;
 
-namespace {
-constexpr float kG = 9.81f;
-} // namespace
 
 // The seed's order is scene first. A body made before it joins no scene: each factory says so at once, and
 // the body still works once add()ed. Then it falls as semi-implicit Euler predicts: after n steps of dt the

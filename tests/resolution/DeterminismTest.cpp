@@ -54,6 +54,7 @@ TEST(Determinism, TwoRunsOfTheSameSceneAreBitIdentical) {
 TEST(Determinism, ReferenceScenesMatchTheCommittedHashes) {
     const unsigned long long shooting = shootingGallery(), pile = boxPile();
     std::printf("shooting gallery 0x%016llx, box pile 0x%016llx\n", shooting, pile);
-    EXPECT_EQ(shooting, kShootingHash) << "the shooting gallery's final state changed (see the file's comment)";
+    EXPECT_EQ(shooting, kShootingHash)
+        << "the shooting gallery's final state changed (see the file's comment)";
     EXPECT_EQ(pile, kBoxPileHash) << "the box pile's final state changed (see the file's comment)";
 }
