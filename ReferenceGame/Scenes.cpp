@@ -46,7 +46,9 @@ void buildBallPit(World& world, int balls, unsigned seed) {
     std::uniform_real_distribution<float> jitter(-0.04f, 0.04f);
     for (int i = 0; i < balls; ++i) {
         int layer = i / 64, ix = i % 8, iz = (i / 8) % 8;
-        Vector at(0.7f * (ix - 3.5f) + jitter(rng), 1.0f + 0.7f * layer, 0.7f * (iz - 3.5f) + jitter(rng));
+        // Draws in a stated order (z first): the order of a call's arguments is the compiler's choice.
+        const float dz = jitter(rng), dx = jitter(rng);
+        Vector at(0.7f * (ix - 3.5f) + dx, 1.0f + 0.7f * layer, 0.7f * (iz - 3.5f) + dz);
         world.sphere(at, 0.3f, 0.5f);
     }
 }
@@ -87,7 +89,8 @@ void shootSphere(World& world, int shot) {
 static Vector pileCell(int i, std::mt19937& rng) {
     std::uniform_real_distribution<float> jitter(-0.2f, 0.2f);
     int layer = i / 100, ix = i % 10, iz = (i / 10) % 10;
-    return Vector(1.8f * (ix - 4.5f) + jitter(rng), 1.0f + 1.8f * layer, 1.8f * (iz - 4.5f) + jitter(rng));
+    const float dz = jitter(rng), dx = jitter(rng); // in this order, on every compiler
+    return Vector(1.8f * (ix - 4.5f) + dx, 1.0f + 1.8f * layer, 1.8f * (iz - 4.5f) + dz);
 }
 
 void buildBoxPile(World& world, int boxes, unsigned seed) {
@@ -95,8 +98,11 @@ void buildBoxPile(World& world, int boxes, unsigned seed) {
     std::mt19937 rng(seed);
     std::uniform_real_distribution<float> angle(-3.14159f, 3.14159f), unit(-1, 1);
     for (int i = 0; i < boxes; ++i) {
-        Vector axis(unit(rng), unit(rng), unit(rng));
-        world.box(pileCell(i, rng), kUnitHalf, 1.0f, rotate(axis, angle(rng)));
+        // Random draws in a stated order: the order of a call's arguments is the compiler's choice.
+        const float az = unit(rng), ay = unit(rng), ax = unit(rng);
+        const float turn = angle(rng);
+        const Vector at = pileCell(i, rng);
+        world.box(at, kUnitHalf, 1.0f, rotate(Vector(ax, ay, az), turn));
     }
 }
 

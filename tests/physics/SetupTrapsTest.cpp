@@ -12,7 +12,6 @@ using physics_test::ErrorRecorder;
 using physics_test::kG;
 using physics_test::SceneHolder;
 
-
 // The seed's order is scene first. A body made before it joins no scene: each factory says so at once, and
 // the body still works once add()ed. Then it falls as semi-implicit Euler predicts: after n steps of dt the
 // drop is g dt^2 n (n + 1) / 2 = g t^2 / 2 + g t dt / 2 (60 steps: 4.905 + 0.082 = 4.987 m).
