@@ -6,7 +6,7 @@
 
 #include <cmath>
 #include <cstddef>
-#include <functional>
+#include <cstdint>
 
 class iCollisionGeometry;
 struct RBDynamics;
@@ -82,7 +82,13 @@ struct PairKey {
 };
 struct PairKeyHash {
     size_t operator()(const PairKey& k) const {
-        return std::hash<const void*>()(k.g1) * 31u ^ std::hash<const void*>()(k.g2);
+        // Addresses are aligned (low bits alike): mix them, as FlatMap's open addressing needs.
+        std::uint64_t x = std::uint64_t(reinterpret_cast<std::uintptr_t>(k.g1)) * 0x9e3779b97f4a7c15ull ^
+                          std::uint64_t(reinterpret_cast<std::uintptr_t>(k.g2));
+        x ^= x >> 29;
+        x *= 0xbf58476d1ce4e5b9ull;
+        x ^= x >> 32;
+        return size_t(x);
     }
 };
 

@@ -24,8 +24,7 @@ Vec3 localAnchor(const SolverBody& b, const Vec3& world) {
 } // namespace
 
 int ContactSolver::bodyIndex(RBDynamics* root, const SolverBodyAccess& access) {
-    auto it = m_bodyIndex.find(root);
-    if (it != m_bodyIndex.end()) return it->second;
+    if (const int* known = m_bodyIndex.find(root)) return *known;
     m_bodies.push_back(access.load(root));
     int index = int(m_bodies.size()) - 1;
     m_bodyIndex.emplace(root, index);
@@ -37,7 +36,8 @@ void ContactSolver::buildManifolds(const CollisionContact* contacts, size_t coun
     m_bodies.clear();
     m_bodyIndex.clear();
     m_manifolds.clear();
-    std::unordered_map<PairKey, size_t, PairKeyHash> current;
+    FlatMap<PairKey, size_t, PairKeyHash>& current = m_current;
+    current.clear();
     m_maxDepthBefore = 0;
     for (size_t i = 0; contacts && i < count; ++i) {
         const CollisionContact& c = contacts[i];
@@ -53,8 +53,8 @@ void ContactSolver::buildManifolds(const CollisionContact* contacts, size_t coun
         n.normalize();
 
         PairKey key{c.g1, c.g2};
-        auto found = current.find(key);
-        if (found == current.end()) {
+        const size_t* found = current.find(key);
+        if (!found) {
             Manifold m;
             m.g1 = c.g1;
             m.g2 = c.g2;
@@ -71,7 +71,7 @@ void ContactSolver::buildManifolds(const CollisionContact* contacts, size_t coun
             found = current.emplace(key, m_manifolds.size()).first;
             m_manifolds.push_back(m);
         }
-        Manifold& m = m_manifolds[found->second];
+        Manifold& m = m_manifolds[*found];
         ContactPoint p;
         p.normal = n;
         tangentBasis(n, p.tangent);
@@ -103,7 +103,7 @@ void ContactSolver::buildManifolds(const CollisionContact* contacts, size_t coun
 // a point is speculative: it holds only once its gap closes (see solveContacts), so it never pulls and never
 // stops a body short of touching.
 void ContactSolver::keepPoints(const SolverBodyAccess& access,
-                               const std::unordered_map<PairKey, size_t, PairKeyHash>& reported) {
+                               const FlatMap<PairKey, size_t, PairKeyHash>& reported) {
     if (m_settings.keepDistance <= 0.0f) return;
     const float keep = m_settings.keepDistance, match2 = m_settings.matchDistance * m_settings.matchDistance;
     // Appends to m the points of old that m lacks and that are apart by less than keep.
@@ -132,12 +132,11 @@ void ContactSolver::keepPoints(const SolverBodyAccess& access,
         }
     };
     for (Manifold& m : m_manifolds) {
-        auto it = m_lastIndex.find(PairKey{m.g1, m.g2});
-        if (it != m_lastIndex.end()) keepFrom(m_last[it->second], m);
+        if (const size_t* last = m_lastIndex.find(PairKey{m.g1, m.g2})) keepFrom(m_last[*last], m);
     }
     // A pair the detector no longer reports at all (lifted by a hair) keeps its points for one step.
     for (const Manifold& old : m_last) {
-        if (old.age > 0 || reported.count(PairKey{old.g1, old.g2}) || !access.alive(old.rootA) ||
+        if (old.age > 0 || reported.find(PairKey{old.g1, old.g2}) || !access.alive(old.rootA) ||
             !access.alive(old.rootB))
             continue;
         Manifold m = old;
@@ -153,9 +152,9 @@ void ContactSolver::keepPoints(const SolverBodyAccess& access,
 void ContactSolver::matchPreviousImpulses() {
     const float best0 = m_settings.matchDistance * m_settings.matchDistance;
     for (Manifold& m : m_manifolds) {
-        auto it = m_settings.warmStart ? m_lastIndex.find(PairKey{m.g1, m.g2}) : m_lastIndex.end();
-        if (it == m_lastIndex.end()) continue;
-        const Manifold& old = m_last[it->second];
+        const size_t* last = m_settings.warmStart ? m_lastIndex.find(PairKey{m.g1, m.g2}) : nullptr;
+        if (!last) continue;
+        const Manifold& old = m_last[*last];
         for (int i = 0; i < m.count; ++i) {
             ContactPoint& p = m.points[i];
             // The old point at the same place on body a.

@@ -50,7 +50,7 @@ bool SceneBodyAccess::alive(const RBDynamics* root) const {
 
 void SceneBodyAccess::storeVelocity(const SolverBody& b) const {
     if (!b.root || b.invMass == 0.0f) return;
-    const Mass& m = m_mass.at(b.root);
+    const Mass& m = *m_mass.find(b.root); // load() recorded every movable body
     Mat3 r = b.rotation.toRotationMatrix();
     Vec3 arm = r * m.rootOffset;
     b.root->angularVelocity = toVector(b.w);
@@ -61,7 +61,7 @@ void SceneBodyAccess::storeVelocity(const SolverBody& b) const {
 void SceneBodyAccess::acceptWrites(const std::vector<SolverBody>& bodies) const {
     for (const SolverBody& b : bodies) {
         if (!b.root || b.invMass == 0.0f) continue;
-        RigidBody* body = m_mass.at(b.root).body;
+        RigidBody* body = m_mass.find(b.root)->body;
         body->writtenOmega = b.root->angularVelocity;
         body->writtenMomentum = b.root->angularMomentum;
         body->writtenOrientation = b.root->orientation;
@@ -91,8 +91,8 @@ void Islands::build(const std::vector<RigidBody*>& bodies, const SceneBodyAccess
         if (!rb) return -1;
         auto body = byDynamics.find(rb->getDynamics().attachmentRoot());
         if (body == byDynamics.end()) return -1;
-        auto index = m_index.find(body->second);
-        return index == m_index.end() ? -1 : index->second;
+        const int* index = m_index.find(body->second);
+        return index ? *index : -1;
     };
     m_pushed.assign(m_parent.size(), 0);
     m_outsidersNext.clear();
@@ -112,25 +112,26 @@ void Islands::build(const std::vector<RigidBody*>& bodies, const SceneBodyAccess
 bool Islands::outsiderMoves(const RBDynamics& body) {
     const RBDynamics& d = *body.attachmentRoot();
     Pose now{d.position, d.orientation};
-    auto before = m_outsiders.find(&d);
-    bool moves = d.velocity != Vector() || d.angularVelocity != Vector() || before == m_outsiders.end() ||
-                 before->second.position != now.position || before->second.orientation != now.orientation;
+    const Pose* before = m_outsiders.find(&d);
+    bool moves = d.velocity != Vector() || d.angularVelocity != Vector() || !before ||
+                 before->position != now.position || before->orientation != now.orientation;
     m_outsidersNext[&d] = now;
     return moves;
 }
 
 void Islands::wakeTouched(const std::vector<RigidBody*>& bodies) {
     m_outsiders.swap(m_outsidersNext);
-    std::vector<char> awake(m_parent.size(), 0);
+    std::vector<char>& awake = m_awake;
+    awake.assign(m_parent.size(), 0);
     for (size_t i = 0; i < m_pushed.size(); ++i)
         if (m_pushed[i]) awake[find(int(i))] = 1;
     for (RigidBody* b : bodies) {
-        auto it = m_index.find(b);
-        if (it != m_index.end() && !b->asleep()) awake[find(it->second)] = 1;
+        const int* it = m_index.find(b);
+        if (it && !b->asleep()) awake[find(*it)] = 1;
     }
     for (RigidBody* b : bodies) {
-        auto it = m_index.find(b);
-        if (it != m_index.end() && b->asleep() && awake[find(it->second)]) {
+        const int* it = m_index.find(b);
+        if (it && b->asleep() && awake[find(*it)]) {
             b->setAsleep(false);
             b->restTime = 0;
         }
@@ -138,19 +139,20 @@ void Islands::wakeTouched(const std::vector<RigidBody*>& bodies) {
 }
 
 void Islands::updateSleep(const std::vector<RigidBody*>& bodies, float dt) {
-    std::vector<float> leastRest(m_parent.size(), kTimeToSleep * 2);
+    std::vector<float>& leastRest = m_leastRest;
+    leastRest.assign(m_parent.size(), kTimeToSleep * 2);
     for (RigidBody* b : bodies) {
-        auto it = m_index.find(b);
-        if (it == m_index.end() || b->asleep()) continue;
+        const int* it = m_index.find(b);
+        if (!it || b->asleep()) continue;
         const RBDynamics& d = b->getDynamics();
         bool resting = d.velocity.length() < kSleepSpeed && d.angularVelocity.length() < kSleepSpeed;
         b->restTime = resting ? b->restTime + dt : 0.0f;
-        float& least = leastRest[find(it->second)];
+        float& least = leastRest[find(*it)];
         least = std::min(least, b->restTime);
     }
     for (RigidBody* b : bodies) {
-        auto it = m_index.find(b);
-        if (it == m_index.end() || b->asleep() || leastRest[find(it->second)] < kTimeToSleep) continue;
+        const int* it = m_index.find(b);
+        if (!it || b->asleep() || leastRest[find(*it)] < kTimeToSleep) continue;
         RBDynamics& d = b->getDynamics();
         b->setAsleep(true);
         d.velocity = d.angularVelocity = d.angularMomentum = Vector();

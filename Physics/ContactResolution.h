@@ -10,6 +10,7 @@
 
 #include "Composite.h"
 #include "ContactSolver.h"
+#include "FlatMap.h"
 
 #include <unordered_map>
 #include <vector>
@@ -23,7 +24,12 @@ class RigidBody;
 class SceneBodyAccess final : public SolverBodyAccess {
 public:
     using BodyMap = std::unordered_map<const RBDynamics*, RigidBody*>;
-    SceneBodyAccess(const BodyMap& bodies, const Vec3& gravity) : m_bodies(bodies), m_gravity(gravity) {}
+    // The scene keeps one (its tables keep their storage from step to step); gravity is set each step.
+    explicit SceneBodyAccess(const BodyMap& bodies) : m_bodies(bodies) {}
+    void startStep(const Vec3& gravity) {
+        m_gravity = gravity;
+        m_mass.clear();
+    }
 
     SolverBody load(RBDynamics* root) const override;
     void storeVelocity(const SolverBody& b) const override;
@@ -38,8 +44,8 @@ private:
         Mat3 inertia;    // local, about the composite COM
     };
     const BodyMap& m_bodies;
-    Vec3 m_gravity;
-    mutable std::unordered_map<const RBDynamics*, Mass> m_mass;
+    Vec3 m_gravity = Vec3::Zero();
+    mutable FlatMap<const RBDynamics*, Mass> m_mass;
     mutable Composite m_scratch;
 };
 
@@ -68,10 +74,12 @@ private:
         Vector position;
         Matrix orientation;
     };
-    std::unordered_map<const RigidBody*, int> m_index;
+    FlatMap<const RigidBody*, int> m_index;
     mutable std::vector<int> m_parent;
     std::vector<char> m_pushed; // per island member: touched by a moving outsider
-    std::unordered_map<const RBDynamics*, Pose> m_outsiders, m_outsidersNext; // last step's poses, this one's
+    FlatMap<const RBDynamics*, Pose> m_outsiders, m_outsidersNext; // last step's poses, this one's
+    std::vector<char> m_awake;                                     // per island root (wakeTouched)
+    std::vector<float> m_leastRest;                                // per island root (updateSleep)
 };
 
 } // namespace physics

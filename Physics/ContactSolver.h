@@ -22,11 +22,11 @@
 #pragma once
 
 #include "ContactManifold.h"
+#include "FlatMap.h"
 #include "MathBridge.h"
 #include "iContactSettings.h"
 
 #include <cstddef>
-#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -98,8 +98,7 @@ private:
     // ContactManifolds.cpp
     int bodyIndex(RBDynamics* root, const SolverBodyAccess& access);
     void buildManifolds(const CollisionContact* contacts, size_t count, const SolverBodyAccess& access);
-    void keepPoints(const SolverBodyAccess& access,
-                    const std::unordered_map<PairKey, size_t, PairKeyHash>& reported);
+    void keepPoints(const SolverBodyAccess& access, const FlatMap<PairKey, size_t, PairKeyHash>& reported);
     void matchPreviousImpulses();
     void storeImpulses();
     // ContactSolver.cpp
@@ -130,10 +129,11 @@ private:
 
     SolverSettings m_settings;
     std::vector<SolverBody> m_bodies;
-    std::unordered_map<const RBDynamics*, int> m_bodyIndex;
+    FlatMap<const RBDynamics*, int> m_bodyIndex;
     std::vector<Manifold> m_manifolds; // this step's, while solving
     std::vector<Manifold> m_last;      // last step's, in solving order (for warm starting and keeping)
-    std::unordered_map<PairKey, size_t, PairKeyHash> m_lastIndex; // into m_last
+    FlatMap<PairKey, size_t, PairKeyHash> m_lastIndex; // into m_last
+    FlatMap<PairKey, size_t, PairKeyHash> m_current;   // into m_manifolds, while they are built
     float m_maxDepthBefore = 0, m_maxDepthAfter = 0;
     float m_dt = 0; // the step being solved
     static constexpr int kProjectionIterations = 4;
@@ -143,7 +143,9 @@ private:
     // Shock propagation: each body's contact distance from the immovable world, the manifolds each body is
     // in, and the manifolds between levels, lowest first, with whether b is the upper body.
     std::vector<int> m_level;
-    std::vector<std::vector<int>> m_touching;
+    std::vector<int> m_touchStart, m_touching; // each body's manifolds: m_touching[m_touchStart[i] ..]
+    std::vector<int> m_scratch;
+    std::vector<char> m_carries, m_keep;
     std::vector<std::pair<size_t, bool>> m_shock;
     static constexpr float kHeavyRatio = 10.0f; // shock propagation acts under a body this much heavier
     // The soft contact for the current sub-step length.

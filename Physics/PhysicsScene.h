@@ -129,6 +129,7 @@ private:
     bool m_reportedDrops = false;
     Composite m_composite; // scratch, reused so that stepping allocates nothing
     ContactSolver m_solver;
+    SceneBodyAccess m_bodyAccess{m_byDynamics}; // the solver's view of the bodies (after m_byDynamics)
     Islands m_islands;
     bool m_sleeping = true;
     ContinuousStage m_continuous;

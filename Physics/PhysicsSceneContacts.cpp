@@ -9,9 +9,9 @@
 namespace physics {
 
 void PhysicsScene::resolveContacts(const CollisionContact* contacts, size_t count, float dt) {
-    SceneBodyAccess access(m_byDynamics, toEigen(m_gravity));
-    m_solver.solve(contacts, count, dt, access);
-    access.acceptWrites(m_solver.bodies());
+    m_bodyAccess.startStep(toEigen(m_gravity));
+    m_solver.solve(contacts, count, dt, m_bodyAccess);
+    m_bodyAccess.acceptWrites(m_solver.bodies());
 }
 
 void PhysicsScene::holdCollisionEvents() {

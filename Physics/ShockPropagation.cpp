@@ -25,21 +25,30 @@ namespace physics {
 void ContactSolver::orderByLevel() {
     const int n = int(m_bodies.size());
     m_level.assign(size_t(n), INT_MAX);
-    m_touching.assign(size_t(n), {});
-    std::vector<int> queue;
+    // Each body's manifolds, as one list per body in one array (m_touching[m_touchStart[i] ..]).
+    m_touchStart.assign(size_t(n) + 1, 0);
+    for (const Manifold& m : m_manifolds) {
+        ++m_touchStart[size_t(m.a) + 1];
+        ++m_touchStart[size_t(m.b) + 1];
+    }
+    for (int i = 0; i < n; ++i) m_touchStart[size_t(i) + 1] += m_touchStart[size_t(i)];
+    m_touching.resize(2 * m_manifolds.size());
+    m_scratch.assign(m_touchStart.begin(), m_touchStart.end() - 1); // next free place per body
+    for (size_t k = 0; k < m_manifolds.size(); ++k) {
+        m_touching[size_t(m_scratch[size_t(m_manifolds[k].a)]++)] = int(k);
+        m_touching[size_t(m_scratch[size_t(m_manifolds[k].b)]++)] = int(k);
+    }
+    std::vector<int>& queue = m_scratch;
+    queue.clear();
     for (int i = 0; i < n; ++i)
         if (!movable(m_bodies[size_t(i)])) {
             m_level[size_t(i)] = 0;
             queue.push_back(i);
         }
-    for (size_t k = 0; k < m_manifolds.size(); ++k) {
-        m_touching[size_t(m_manifolds[k].a)].push_back(int(k));
-        m_touching[size_t(m_manifolds[k].b)].push_back(int(k));
-    }
     for (size_t q = 0; q < queue.size(); ++q) { // breadth first from the immovable world
         const int body = queue[q];
-        for (int k : m_touching[size_t(body)]) {
-            const Manifold& m = m_manifolds[size_t(k)];
+        for (int t = m_touchStart[size_t(body)]; t < m_touchStart[size_t(body) + 1]; ++t) {
+            const Manifold& m = m_manifolds[size_t(m_touching[size_t(t)])];
             const int other = m.a == body ? m.b : m.a;
             if (m_level[size_t(other)] != INT_MAX) continue;
             m_level[size_t(other)] = m_level[size_t(body)] + 1;
@@ -53,16 +62,20 @@ void ContactSolver::orderByLevel() {
         if (la == lb || la == INT_MAX || lb == INT_MAX) continue;
         m_shock.push_back({k, lb > la}); // (manifold, whether b is the upper body)
     }
-    std::stable_sort(m_shock.begin(), m_shock.end(), [this](const auto& x, const auto& y) {
+    // By level, and in manifold order within a level (a stable order without stable_sort's buffer).
+    std::sort(m_shock.begin(), m_shock.end(), [this](const auto& x, const auto& y) {
         const Manifold &mx = m_manifolds[x.first], &my = m_manifolds[y.first];
-        return std::max(m_level[size_t(mx.a)], m_level[size_t(mx.b)]) <
-               std::max(m_level[size_t(my.a)], m_level[size_t(my.b)]);
+        const int lx = std::max(m_level[size_t(mx.a)], m_level[size_t(mx.b)]);
+        const int ly = std::max(m_level[size_t(my.a)], m_level[size_t(my.b)]);
+        return lx < ly || (lx == ly && x.first < y.first);
     });
     // Only under a heavy body: a pair whose upper body outweighs the lower kHeavyRatio times, and every pair
     // below one down to the world. Elsewhere the pass's nudges (no reaction on the lower body) kept the
     // 210-box pyramid jittering above the sleep speed: awake for 10 s instead of asleep within 2.
-    std::vector<char> carries(m_bodies.size(), 0);
-    std::vector<char> keep(m_shock.size(), 0);
+    std::vector<char>& carries = m_carries;
+    std::vector<char>& keep = m_keep;
+    carries.assign(m_bodies.size(), 0);
+    keep.assign(m_shock.size(), 0);
     for (size_t j = m_shock.size(); j-- > 0;) { // from the top down
         const Manifold& m = m_manifolds[m_shock[j].first];
         const int upper = m_shock[j].second ? m.b : m.a, lower = m_shock[j].second ? m.a : m.b;
