@@ -26,6 +26,7 @@
 #include "iContactFeatures.h"
 #include "iShapeCast.h"
 
+#include <cstdint>
 #include <list>
 #include <utility>
 #include <vector>
@@ -157,6 +158,11 @@ private:
     std::vector<Notice> m_touching; // the pairs touching at the last call
     std::vector<Notice> m_held;     // pairs that touched since the last delivery (events held)
     std::vector<Notice> m_delivery; // scratch
+    struct BodyPair {
+        std::uintptr_t lo, hi; // the two bodies' addresses, lower first
+        size_t index;          // the notice's place in its list
+    };
+    std::vector<BodyPair> m_bodyPairs; // scratch: notifyListeners finds repeated body pairs
     bool m_holdEvents = false;
     unsigned long long m_call = 0; // populateContactList calls, to tell this call's entries
     std::vector<iCollisionListener*> m_listenerSnapshot;

