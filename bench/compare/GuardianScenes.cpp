@@ -44,6 +44,7 @@ public:
     GuardianWorld(const SceneDesc& s, const SimOptions& o) : m_scene(CreatePhysicsScene(nullptr)) {
         iPhysicsSceneSettings* settings = settingsOf(m_scene);
         settings->setSleepingEnabled(o.sleeping);
+        settings->setContinuousCollisionEnabled(o.continuous);
         if (o.iterations > 0) settings->setSolverIterations(o.iterations);
         // Restitution 0 everywhere: the bodiless ground plane has the default material (0.5), so combine by
         // the smaller value. Friction: the default 0.25 a body, summed (the seed's rule), is 0.5.

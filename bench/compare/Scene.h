@@ -46,8 +46,9 @@ struct BodyState {
 };
 
 struct SimOptions {
-    bool sleeping = false; // each engine's own sleeping / deactivation at its defaults when on
-    int iterations = 0;    // 0: the engine's default; otherwise its own knob (see EngineInfo::knob)
+    bool sleeping = false;  // each engine's own sleeping / deactivation at its defaults when on
+    int iterations = 0;     // 0: the engine's default; otherwise its own knob (see EngineInfo::knob)
+    bool continuous = true; // Guardian only: its continuous collision stage (on by default)
 };
 
 // A scene being simulated by one engine.

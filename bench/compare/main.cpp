@@ -4,7 +4,8 @@
 // Guardian's time ratio to each, and accuracy figures computed the same way from every engine's poses
 // (Scene.cpp). Then the broadphase row and the equal-accuracy row (the awake pyramid at the cheapest setting
 // of each engine's own knob that keeps its top within 5 cm). Options: --quick (each row once, fewer steps),
-// --only TEXT (only the rows whose name contains TEXT).
+// --only TEXT (only the rows whose name contains TEXT), --no-ccd (Guardian's continuous collision off: not
+// its default, for finding out what that stage costs and does here).
 #include "Scene.h"
 
 #include <algorithm>
@@ -163,8 +164,8 @@ void broadphaseRow(const std::vector<Engine>& engines, int boxes, int rounds) {
     std::fflush(stdout);
 }
 
-void equalAccuracyRow(const std::vector<Engine>& engines, int steps) {
-    Row row{"pyramid awake, ladder", pyramidScene(20), SimOptions{}, steps, 1, Extra::TopDrift};
+void equalAccuracyRow(const std::vector<Engine>& engines, int steps, const SimOptions& base) {
+    Row row{"pyramid awake, ladder", pyramidScene(20), base, steps, 1, Extra::TopDrift};
     std::printf(
         "\n== equal accuracy: the awake 210-box pyramid, cheapest setting of each engine's knob that keeps "
         "the top within 5 cm after %.1f s\n",
@@ -174,7 +175,7 @@ void equalAccuracyRow(const std::vector<Engine>& engines, int steps) {
         std::printf("  %-9s (%s):", e.info.name.c_str(), e.info.knob.c_str());
         bool found = false;
         for (int setting : e.info.ladder) {
-            SimOptions o;
+            SimOptions o = base;
             o.iterations = setting;
             Result r = runOnce(e, row, o);
             std::printf(" %d -> %.1f mm %.3f ms;", setting, 1000 * r.extra, r.ms);
@@ -220,15 +221,17 @@ void summaryTable(const std::vector<Summary>& rows) {
 
 int main(int argc, char** argv) {
     using namespace compare;
-    bool quick = false;
+    bool quick = false, noCcd = false;
     std::string only;
     for (int i = 1; i < argc; ++i) {
         if (std::strcmp(argv[i], "--quick") == 0)
             quick = true;
+        else if (std::strcmp(argv[i], "--no-ccd") == 0)
+            noCcd = true;
         else if (std::strcmp(argv[i], "--only") == 0 && i + 1 < argc)
             only = argv[++i];
         else {
-            std::printf("usage: %s [--quick] [--only TEXT]\n", argv[0]);
+            std::printf("usage: %s [--quick] [--no-ccd] [--only TEXT]\n", argv[0]);
             return 2;
         }
     }
@@ -250,16 +253,17 @@ int main(int argc, char** argv) {
     std::fflush(stdout);
 
     const int pile = quick ? 120 : 600, reps = quick ? 1 : 3;
+    SimOptions awake, asleep;
+    awake.continuous = asleep.continuous = !noCcd;
+    asleep.sleeping = true;
     const std::vector<Row> rows = {
-        {"rain: 1,000 spheres", rainScene(1000), SimOptions{}, pile, reps, Extra::None},
-        {"box pile: 1,000 boxes", boxPileScene(1000), SimOptions{}, pile, reps, Extra::None},
-        {"box pile: 4,000 boxes", boxPileScene(4000), SimOptions{}, pile, 1, Extra::None},
-        {"pyramid 210 awake", pyramidScene(20), SimOptions{}, pile, reps, Extra::TopDrift},
-        {"pyramid 210 asleep", pyramidScene(20), SimOptions{true, 0}, pile, reps, Extra::TopDrift},
-        {"heavy on light 1:1,000", heavyOnLightScene(1000), SimOptions{}, quick ? 120 : 300, reps,
-         Extra::Sink},
-        {"heavy on light 1:10,000", heavyOnLightScene(10000), SimOptions{}, quick ? 120 : 300, reps,
-         Extra::Sink},
+        {"rain: 1,000 spheres", rainScene(1000), awake, pile, reps, Extra::None},
+        {"box pile: 1,000 boxes", boxPileScene(1000), awake, pile, reps, Extra::None},
+        {"box pile: 4,000 boxes", boxPileScene(4000), awake, pile, 1, Extra::None},
+        {"pyramid 210 awake", pyramidScene(20), awake, pile, reps, Extra::TopDrift},
+        {"pyramid 210 asleep", pyramidScene(20), asleep, pile, reps, Extra::TopDrift},
+        {"heavy on light 1:1,000", heavyOnLightScene(1000), awake, quick ? 120 : 300, reps, Extra::Sink},
+        {"heavy on light 1:10,000", heavyOnLightScene(10000), awake, quick ? 120 : 300, reps, Extra::Sink},
     };
     std::vector<Summary> done;
     for (const Row& row : rows)
@@ -267,7 +271,7 @@ int main(int argc, char** argv) {
     if (only.empty() || std::string("broadphase").find(only) != std::string::npos)
         broadphaseRow(engines, 10000, quick ? 3 : 10);
     if (only.empty() || std::string("equal accuracy").find(only) != std::string::npos)
-        equalAccuracyRow(engines, pile);
+        equalAccuracyRow(engines, pile, awake);
     if (!done.empty()) summaryTable(done);
     return 0;
 }
