@@ -35,10 +35,11 @@ Pose randomTurn(std::mt19937& rng) {
     return turned(axis, angle(rng));
 }
 
-// The pile column of ReferenceGame's buildBoxPile: 10 x 10 cells 1.8 m apart (jittered by +-0.2 m) a layer,
-// layers 1.8 m apart from y = 1.
+// The pile column of ReferenceGame's buildBoxPile: 10 x 10 cells 1.8 m apart a layer, layers 1.8 m apart from
+// y = 1; but jittered by +-3 cm, not +-0.2 m, so that no two turned unit cubes (bounding radius 0.866 m)
+// start overlapping.
 void pileCell(int i, std::mt19937& rng, double p[3]) {
-    std::uniform_real_distribution<double> jitter(-0.2, 0.2);
+    std::uniform_real_distribution<double> jitter(-0.03, 0.03);
     int layer = i / 100, ix = i % 10, iz = (i / 10) % 10;
     p[0] = 1.8 * (ix - 4.5) + jitter(rng);
     p[1] = 1.0 + 1.8 * layer;

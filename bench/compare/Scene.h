@@ -94,7 +94,8 @@ SceneDesc rainScene(int spheres);          // spheres r 0.5 m, 1 kg, in a jitter
 SceneDesc boxPileScene(int boxes);         // randomly turned unit boxes, 1 kg, in the same column
 SceneDesc pyramidScene(int base);          // base + (base - 1) + ... + 1 unit boxes; the last is the top
 SceneDesc heavyOnLightScene(double heavy); // a 1 kg unit box on the ground, a `heavy` kg one on it
-SceneDesc scatteredBoxes(int boxes);       // randomly turned unit boxes on a 1.5 m grid, no ground
+SceneDesc
+scatteredBoxes(int boxes); // randomly turned unit boxes on a 1.5 m grid (neighbours may touch), no ground
 // The scattered boxes moved by up to +-1 cm from their start (a fresh offset per call of this function).
 std::vector<Pose> jiggled(const SceneDesc& scene, unsigned round);
 

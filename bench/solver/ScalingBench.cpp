@@ -31,12 +31,13 @@ std::map<int, double>& perBodyNs() {
     return figures;
 }
 
-// `boxes` randomly turned unit boxes, 1 kg, on an L x L grid 1.8 m apart a layer (jittered), L =
+// `boxes` randomly turned unit boxes, 1 kg, on an L x L grid 1.8 m apart a layer, L =
 // ceil(sqrt(n/5)).
 void buildScalingPile(World& world, int boxes) {
     world.ground();
     std::mt19937 rng(12);
-    std::uniform_real_distribution<float> jitter(-0.2f, 0.2f), angle(-3.14159f, 3.14159f), unit(-1, 1);
+    // Jitter +-3 cm: at 1.8 m no two turned unit cubes (bounding radius 0.866 m) start overlapping.
+    std::uniform_real_distribution<float> jitter(-0.03f, 0.03f), angle(-3.14159f, 3.14159f), unit(-1, 1);
     const int side = int(std::ceil(std::sqrt(boxes / 5.0)));
     for (int i = 0; i < boxes; ++i) {
         int layer = i / (side * side), ix = i % side, iz = (i / side) % side;
