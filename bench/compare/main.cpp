@@ -241,8 +241,9 @@ int main(int argc, char** argv) {
     std::time_t now = std::time(nullptr);
     char date[64];
     std::strftime(date, sizeof date, "%Y-%m-%d %H:%M UTC", std::gmtime(&now));
-    std::printf("bench_compare %s, %s, %u hardware threads, one thread used, dt 1/60 s\n",
-                quick ? "--quick" : "", date, std::thread::hardware_concurrency());
+    std::printf("bench_compare%s%s, %s, %u hardware threads, one thread used, dt 1/60 s\n",
+                quick ? " --quick" : "", noCcd ? " --no-ccd (Guardian's continuous collision off)" : "", date,
+                std::thread::hardware_concurrency());
     std::printf("Bullet package %s, ODE package %s\n", COMPARE_BULLET_VERSION, COMPARE_ODE_VERSION);
     for (const Engine& e : engines)
         std::printf("  %-9s %-6s  defaults: %s\n", e.info.name.c_str(), e.info.precision.c_str(),
