@@ -1,9 +1,10 @@
 // ScalingBench.cpp - how one step's cost grows with the body count (issue 12, item 5): 100, 300, 1,000, 3,000
 // and 10,000 awake unit boxes (sleeping off, default settings) dropped in a pile of about five layers (the
 // footprint grows with the count, so each box has about as many neighbours at every count), settled for 5 s
-// before timing. Counters: ns per awake body-step, and its ratio to the 1,000-box figure measured first in
-// the same run. The issue's target: at 10,000 within 1.5x of the cost at 1,000; main() prints whether it
-// holds.
+// before timing. Counters: ns per awake body-step in this thread's CPU time (what a shared, busy machine
+// disturbs least; the wall-clock figure is the benchmark's time and wall_ns_per_body_step), and its ratio to
+// the 1,000-box figure measured first in the same run. The issue's target: at 10,000 within 1.5x of the cost
+// at 1,000; main() prints whether it holds.
 #include "MathDeclarations.h"
 #include "RBDynamics.h"
 #include "World.h"
@@ -21,11 +22,20 @@
 #include <map>
 #include <random>
 
+#include <time.h>
+
 namespace {
 
 constexpr int kSettleSteps = 300; // 5 s: the top layer (8.2 m) lands in 1.3 s
 constexpr int kReference = 1000;
 
+double threadCpuSeconds() {
+    timespec t{};
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+    return double(t.tv_sec) + 1e-9 * double(t.tv_nsec);
+}
+
+// Per box count: CPU ns per awake body-step.
 std::map<int, double>& perBodyNs() {
     static std::map<int, double> figures;
     return figures;
@@ -59,22 +69,26 @@ void BM_StepScaling(benchmark::State& state) {
     auto advance = [&] { scene->update(int(std::ceil(++step * 1000.0 / 60.0))); };
     for (int i = 0; i < kSettleSteps; ++i) advance();
     const long long before = statsOf(scene)->getStepCount();
-    double total = 0;
+    double wall = 0, cpu = 0;
     size_t awake = 0;
     for (auto _ : state) {
         auto t0 = std::chrono::steady_clock::now();
+        double c0 = threadCpuSeconds();
         advance();
+        cpu += threadCpuSeconds() - c0;
         double dt = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
         state.SetIterationTime(dt);
-        total += dt;
+        wall += dt;
         awake = std::max(awake, statsOf(scene)->getAwakeBodyCount());
     }
     const double steps = double(statsOf(scene)->getStepCount() - before);
-    const double ns = steps > 0 && awake > 0 ? 1e9 * total / (steps * double(awake)) : 0.0;
+    const double bodySteps = steps * double(awake);
+    const double ns = bodySteps > 0 ? 1e9 * cpu / bodySteps : 0.0;
     perBodyNs()[boxes] = ns;
     state.counters["awake"] = double(awake);
     state.counters["steps"] = steps;
     state.counters["ns_per_body_step"] = ns;
+    state.counters["wall_ns_per_body_step"] = bodySteps > 0 ? 1e9 * wall / bodySteps : 0.0;
     auto ref = perBodyNs().find(kReference);
     state.counters["ratio_to_1000"] = ref != perBodyNs().end() && ref->second > 0 ? ns / ref->second : 0.0;
     delete world;
@@ -104,7 +118,7 @@ int main(int argc, char** argv) {
     const auto& figures = perBodyNs();
     auto ref = figures.find(kReference);
     if (ref == figures.end() || ref->second <= 0) return 0;
-    std::printf("\nns per awake body-step, ratio to %d boxes:\n", kReference);
+    std::printf("\nCPU ns per awake body-step, ratio to %d boxes:\n", kReference);
     for (const auto& f : figures)
         std::printf("  %6d boxes: %8.1f ns  x%.2f\n", f.first, f.second, f.second / ref->second);
     auto big = figures.find(10000);
