@@ -1,0 +1,278 @@
+// main.cpp - bench_compare: the same scenes on Guardian, Bullet and ODE in one process, one thread, dt 1/60,
+// engines interleaved within each repetition (Guardian, Bullet, ODE, then again), sleeping off unless a row
+// says asleep. For each row: ms per step of each engine (median over repetitions, building not timed),
+// Guardian's time ratio to each, and accuracy figures computed the same way from every engine's poses
+// (Scene.cpp). Then the broadphase row and the equal-accuracy row (the awake pyramid at the cheapest setting
+// of each engine's own knob that keeps its top within 5 cm). Options: --quick (each row once, fewer steps),
+// --only TEXT (only the rows whose name contains TEXT), --no-ccd (Guardian's continuous collision off: not
+// its default, for finding out what that stage costs and does here).
+#include "Scene.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstring>
+#include <ctime>
+#include <functional>
+#include <string>
+#include <thread>
+#include <vector>
+
+#ifndef COMPARE_BULLET_VERSION
+#define COMPARE_BULLET_VERSION "?"
+#endif
+#ifndef COMPARE_ODE_VERSION
+#define COMPARE_ODE_VERSION "?"
+#endif
+
+namespace compare {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+struct Engine {
+    EngineInfo info;
+    std::function<std::unique_ptr<Sim>(const SceneDesc&, const SimOptions&)> sim;
+    std::function<std::unique_ptr<PairFinder>(const SceneDesc&)> pairs;
+};
+
+enum class Extra { None, TopDrift, Sink };
+
+struct Row {
+    std::string name;
+    SceneDesc scene;
+    SimOptions options;
+    int steps;
+    int reps;
+    Extra extra;
+};
+
+struct Result {
+    double ms = 0;     // per step
+    Accuracy acc;      // at the end
+    double extra = 0;  // top drift, or how far the heavy box ended below its resting height (m)
+    double extra2 = 0; // the heavy box's deepest sink during the run (m)
+};
+
+struct Summary {
+    std::string name;
+    Result r[3];
+};
+
+double seconds(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
+
+Result runOnce(const Engine& e, const Row& row, const SimOptions& options) {
+    std::unique_ptr<Sim> sim = e.sim(row.scene, options);
+    const size_t last = sim->bodyCount() - 1;
+    const BodyState start = sim->state(last);
+    const double rest = row.scene.bodies.back().pose.p[1];
+    Result r;
+    double t = 0;
+    for (int i = 0; i < row.steps; ++i) {
+        Clock::time_point t0 = Clock::now();
+        sim->step();
+        t += seconds(t0);
+        if (row.extra == Extra::Sink) r.extra2 = std::max(r.extra2, rest - sim->state(last).pose.p[1]);
+    }
+    r.ms = 1000.0 * t / row.steps;
+    std::vector<BodyState> end = readAll(*sim);
+    r.acc = measure(row.scene, end);
+    if (row.extra == Extra::TopDrift) r.extra = distance(start.pose.p, end[last].pose.p);
+    if (row.extra == Extra::Sink) r.extra = rest - end[last].pose.p[1];
+    return r;
+}
+
+double median(std::vector<double> v) {
+    std::sort(v.begin(), v.end());
+    return v.empty() ? 0 : v[v.size() / 2];
+}
+
+const char* extraLabel(Extra x) {
+    return x == Extra::TopDrift ? "top drift mm" : x == Extra::Sink ? "sink end / max mm" : "";
+}
+
+Summary runRow(const std::vector<Engine>& engines, const Row& row) {
+    std::printf("\n== %s (%zu bodies, %d steps = %.1f s, %d rep%s, sleeping %s)\n", row.name.c_str(),
+                row.scene.bodies.size(), row.steps, row.steps * kDt, row.reps,
+                row.reps > 1 ? "s, median" : "", row.options.sleeping ? "on" : "off");
+    std::vector<double> ms[3];
+    Summary sum;
+    sum.name = row.name;
+    for (int rep = 0; rep < row.reps; ++rep)
+        for (size_t e = 0; e < engines.size(); ++e) {
+            sum.r[e] = runOnce(engines[e], row, row.options);
+            ms[e].push_back(sum.r[e].ms);
+        }
+    std::printf("  %-9s %9s %15s %13s %7s  %s\n", "engine", "ms/step", "ground pen mm", "pair pen mm",
+                "moving", extraLabel(row.extra));
+    for (size_t e = 0; e < engines.size(); ++e) {
+        Result& r = sum.r[e];
+        r.ms = median(ms[e]);
+        std::printf("  %-9s %9.3f %15.2f %13.2f %7zu", engines[e].info.name.c_str(), r.ms,
+                    1000 * r.acc.groundPenetration, 1000 * r.acc.pairPenetration, r.acc.moving);
+        if (row.extra == Extra::TopDrift) std::printf("  %.1f", 1000 * r.extra);
+        if (row.extra == Extra::Sink) std::printf("  %.1f / %.1f", 1000 * r.extra, 1000 * r.extra2);
+        std::printf("\n");
+    }
+    std::printf("  time ratio Guardian/Bullet %.2f, Guardian/ODE %.2f\n", sum.r[0].ms / sum.r[1].ms,
+                sum.r[0].ms / sum.r[2].ms);
+    std::fflush(stdout);
+    return sum;
+}
+
+void broadphaseRow(const std::vector<Engine>& engines, int boxes, int rounds) {
+    SceneDesc scene = scatteredBoxes(boxes);
+    std::printf(
+        "\n== broadphase only: %d randomly turned unit boxes on a 1.5 m grid, %d calls each (median)\n",
+        boxes, rounds);
+    std::vector<std::unique_ptr<PairFinder>> finders;
+    std::vector<size_t> first;
+    for (const Engine& e : engines) {
+        finders.push_back(e.pairs(scene));
+        first.push_back(finders.back()->findPairs()); // the first call finds every pair: not timed
+    }
+    std::vector<double> moved[3], still[3];
+    size_t movedPairs[3] = {0, 0, 0}, stillPairs[3] = {0, 0, 0};
+    for (int round = 0; round < rounds; ++round) {
+        std::vector<Pose> poses = jiggled(scene, unsigned(round));
+        for (size_t e = 0; e < engines.size(); ++e) {
+            finders[e]->place(poses);
+            Clock::time_point t0 = Clock::now();
+            movedPairs[e] = finders[e]->findPairs();
+            moved[e].push_back(1000 * seconds(t0));
+        }
+    }
+    for (int round = 0; round < rounds; ++round)
+        for (size_t e = 0; e < engines.size(); ++e) {
+            Clock::time_point t0 = Clock::now();
+            stillPairs[e] = finders[e]->findPairs();
+            still[e].push_back(1000 * seconds(t0));
+        }
+    std::printf("  %-9s %12s %12s %14s  %s\n", "engine", "moved ms", "still ms", "found (moved)",
+                "what is timed");
+    double m[3], s[3];
+    for (size_t e = 0; e < engines.size(); ++e) {
+        m[e] = median(moved[e]);
+        s[e] = median(still[e]);
+        std::printf("  %-9s %12.3f %12.3f %14zu  %s (first call %zu, still %zu)\n",
+                    engines[e].info.name.c_str(), m[e], s[e], movedPairs[e],
+                    engines[e].info.pairsNote.c_str(), first[e], stillPairs[e]);
+    }
+    std::printf("  time ratio moved: Guardian/Bullet %.2f, Guardian/ODE %.2f; still: Guardian/Bullet %.2f, "
+                "Guardian/ODE %.2f\n",
+                m[0] / m[1], m[0] / m[2], s[0] / s[1], s[0] / s[2]);
+    std::fflush(stdout);
+}
+
+void equalAccuracyRow(const std::vector<Engine>& engines, int steps, const SimOptions& base) {
+    Row row{"pyramid awake, ladder", pyramidScene(20), base, steps, 1, Extra::TopDrift};
+    std::printf(
+        "\n== equal accuracy: the awake 210-box pyramid, cheapest setting of each engine's knob that keeps "
+        "the top within 5 cm after %.1f s\n",
+        steps * kDt);
+    std::string summary;
+    for (const Engine& e : engines) {
+        std::printf("  %-9s (%s):", e.info.name.c_str(), e.info.knob.c_str());
+        bool found = false;
+        for (int setting : e.info.ladder) {
+            SimOptions o = base;
+            o.iterations = setting;
+            Result r = runOnce(e, row, o);
+            std::printf(" %d -> %.1f mm %.3f ms;", setting, 1000 * r.extra, r.ms);
+            std::fflush(stdout);
+            if (r.extra <= 0.05) {
+                char line[200];
+                std::snprintf(line, sizeof line, "  %-9s setting %3d: %.3f ms/step, top drift %.1f mm\n",
+                              e.info.name.c_str(), setting, r.ms, 1000 * r.extra);
+                summary += line;
+                found = true;
+                break;
+            }
+        }
+        if (!found) summary += "  " + e.info.name + ": no setting on the ladder keeps the top within 5 cm\n";
+        std::printf("\n");
+    }
+    std::printf("%s", summary.c_str());
+    std::fflush(stdout);
+}
+
+void summaryTable(const std::vector<Summary>& rows) {
+    std::printf("\n== summary (ms per step; accuracy Guardian / Bullet / ODE)\n");
+    std::printf(
+        "| row | Guardian ms | Bullet ms | ODE ms | G/B | G/O | ground pen mm | pair pen mm | moving | "
+        "drift or sink mm |\n|---|---|---|---|---|---|---|---|---|---|\n");
+    for (const Summary& s : rows) {
+        std::printf("| %s | %.3f | %.3f | %.3f | %.2f | %.2f | %.1f / %.1f / %.1f | %.1f / %.1f / %.1f | %zu "
+                    "/ %zu / %zu | ",
+                    s.name.c_str(), s.r[0].ms, s.r[1].ms, s.r[2].ms, s.r[0].ms / s.r[1].ms,
+                    s.r[0].ms / s.r[2].ms, 1000 * s.r[0].acc.groundPenetration,
+                    1000 * s.r[1].acc.groundPenetration, 1000 * s.r[2].acc.groundPenetration,
+                    1000 * s.r[0].acc.pairPenetration, 1000 * s.r[1].acc.pairPenetration,
+                    1000 * s.r[2].acc.pairPenetration, s.r[0].acc.moving, s.r[1].acc.moving,
+                    s.r[2].acc.moving);
+        if (s.r[0].extra != 0 || s.r[1].extra != 0 || s.r[2].extra != 0)
+            std::printf("%.1f / %.1f / %.1f", 1000 * s.r[0].extra, 1000 * s.r[1].extra, 1000 * s.r[2].extra);
+        std::printf(" |\n");
+    }
+}
+
+} // namespace
+} // namespace compare
+
+int main(int argc, char** argv) {
+    using namespace compare;
+    bool quick = false, noCcd = false;
+    std::string only;
+    for (int i = 1; i < argc; ++i) {
+        if (std::strcmp(argv[i], "--quick") == 0)
+            quick = true;
+        else if (std::strcmp(argv[i], "--no-ccd") == 0)
+            noCcd = true;
+        else if (std::strcmp(argv[i], "--only") == 0 && i + 1 < argc)
+            only = argv[++i];
+        else {
+            std::printf("usage: %s [--quick] [--no-ccd] [--only TEXT]\n", argv[0]);
+            return 2;
+        }
+    }
+    std::vector<Engine> engines = {{guardianInfo(), makeGuardianSim, makeGuardianPairs},
+                                   {bulletInfo(), makeBulletSim, makeBulletPairs},
+                                   {odeInfo(), makeOdeSim, makeOdePairs}};
+    std::time_t now = std::time(nullptr);
+    char date[64];
+    std::strftime(date, sizeof date, "%Y-%m-%d %H:%M UTC", std::gmtime(&now));
+    std::printf("bench_compare%s%s, %s, %u hardware threads, one thread used, dt 1/60 s\n",
+                quick ? " --quick" : "", noCcd ? " --no-ccd (Guardian's continuous collision off)" : "", date,
+                std::thread::hardware_concurrency());
+    std::printf("Bullet package %s, ODE package %s\n", COMPARE_BULLET_VERSION, COMPARE_ODE_VERSION);
+    for (const Engine& e : engines)
+        std::printf("  %-9s %-6s  defaults: %s\n", e.info.name.c_str(), e.info.precision.c_str(),
+                    e.info.defaults.c_str());
+    std::printf(
+        "Friction 0.5 and restitution 0 for every contact; accuracy from the poses at the end: deepest "
+        "ground and pair penetration, bodies faster than 0.05 m/s.\n");
+    std::fflush(stdout);
+
+    const int pile = quick ? 120 : 600, reps = quick ? 1 : 3;
+    SimOptions awake, asleep;
+    awake.continuous = asleep.continuous = !noCcd;
+    asleep.sleeping = true;
+    const std::vector<Row> rows = {
+        {"rain: 1,000 spheres", rainScene(1000), awake, pile, reps, Extra::None},
+        {"box pile: 1,000 boxes", boxPileScene(1000), awake, pile, reps, Extra::None},
+        {"box pile: 4,000 boxes", boxPileScene(4000), awake, pile, 1, Extra::None},
+        {"pyramid 210 awake", pyramidScene(20), awake, pile, reps, Extra::TopDrift},
+        {"pyramid 210 asleep", pyramidScene(20), asleep, pile, reps, Extra::TopDrift},
+        {"heavy on light 1:1,000", heavyOnLightScene(1000), awake, quick ? 120 : 300, reps, Extra::Sink},
+        {"heavy on light 1:10,000", heavyOnLightScene(10000), awake, quick ? 120 : 300, reps, Extra::Sink},
+    };
+    std::vector<Summary> done;
+    for (const Row& row : rows)
+        if (only.empty() || row.name.find(only) != std::string::npos) done.push_back(runRow(engines, row));
+    if (only.empty() || std::string("broadphase").find(only) != std::string::npos)
+        broadphaseRow(engines, 10000, quick ? 3 : 10);
+    if (only.empty() || std::string("equal accuracy").find(only) != std::string::npos)
+        equalAccuracyRow(engines, pile, awake);
+    if (!done.empty()) summaryTable(done);
+    return 0;
+}

@@ -1,0 +1,129 @@
+// ScalingBench.cpp - how one step's cost grows with the body count (issue 12, item 5): 100, 300, 1,000, 3,000
+// and 10,000 awake unit boxes (sleeping off, default settings) dropped in a pile of about five layers (the
+// footprint grows with the count, so each box has about as many neighbours at every count), settled for 5 s
+// before timing. Counters: ns per awake body-step in this thread's CPU time (what a shared, busy machine
+// disturbs least; the wall-clock figure is the benchmark's time and wall_ns_per_body_step), and its ratio to
+// the 1,000-box figure measured first in the same run. The issue's target: at 10,000 within 1.5x of the cost
+// at 1,000; main() prints whether it holds.
+#include "MathDeclarations.h"
+#include "RBDynamics.h"
+#include "World.h"
+#include "iPhysicsFrame.h"
+#include "iPhysicsScene.h"
+#include "iPhysicsSceneSettings.h"
+#include "iPhysicsSceneStats.h"
+
+#include <benchmark/benchmark.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <random>
+
+#include <time.h>
+
+namespace {
+
+constexpr int kSettleSteps = 300; // 5 s: the top layer (8.2 m) lands in 1.3 s
+constexpr int kReference = 1000;
+
+double threadCpuSeconds() {
+    timespec t{};
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+    return double(t.tv_sec) + 1e-9 * double(t.tv_nsec);
+}
+
+// Per box count: CPU ns per awake body-step.
+std::map<int, double>& perBodyNs() {
+    static std::map<int, double> figures;
+    return figures;
+}
+
+// `boxes` randomly turned unit boxes, 1 kg, on an L x L grid 1.8 m apart a layer, L =
+// ceil(sqrt(n/5)).
+void buildScalingPile(World& world, int boxes) {
+    world.ground();
+    std::mt19937 rng(12);
+    // Jitter +-3 cm: at 1.8 m no two turned unit cubes (bounding radius 0.866 m) start overlapping.
+    std::uniform_real_distribution<float> jitter(-0.03f, 0.03f), angle(-3.14159f, 3.14159f), unit(-1, 1);
+    const int side = int(std::ceil(std::sqrt(boxes / 5.0)));
+    for (int i = 0; i < boxes; ++i) {
+        int layer = i / (side * side), ix = i % side, iz = (i / side) % side;
+        Vector at(1.8f * (ix - 0.5f * (side - 1)) + jitter(rng), 1.0f + 1.8f * layer,
+                  1.8f * (iz - 0.5f * (side - 1)) + jitter(rng));
+        Vector axis(unit(rng), unit(rng), unit(rng));
+        world.box(at, Vector(0.5f, 0.5f, 0.5f), 1.0f, rotate(axis, angle(rng)));
+    }
+}
+
+void BM_StepScaling(benchmark::State& state) {
+    const int boxes = int(state.range(0));
+    iPhysicsScene* scene = CreatePhysicsScene(nullptr);
+    settingsOf(scene)->setSleepingEnabled(false);
+    scene->update(0);
+    World* world = new World(scene);
+    buildScalingPile(*world, boxes);
+    int step = 0;
+    auto advance = [&] { scene->update(int(std::ceil(++step * 1000.0 / 60.0))); };
+    for (int i = 0; i < kSettleSteps; ++i) advance();
+    const long long before = statsOf(scene)->getStepCount();
+    double wall = 0, cpu = 0;
+    size_t awake = 0;
+    for (auto _ : state) {
+        auto t0 = std::chrono::steady_clock::now();
+        double c0 = threadCpuSeconds();
+        advance();
+        cpu += threadCpuSeconds() - c0;
+        double dt = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+        state.SetIterationTime(dt);
+        wall += dt;
+        awake = std::max(awake, statsOf(scene)->getAwakeBodyCount());
+    }
+    const double steps = double(statsOf(scene)->getStepCount() - before);
+    const double bodySteps = steps * double(awake);
+    const double ns = bodySteps > 0 ? 1e9 * cpu / bodySteps : 0.0;
+    perBodyNs()[boxes] = ns;
+    state.counters["awake"] = double(awake);
+    state.counters["steps"] = steps;
+    state.counters["ns_per_body_step"] = ns;
+    state.counters["wall_ns_per_body_step"] = bodySteps > 0 ? 1e9 * wall / bodySteps : 0.0;
+    auto ref = perBodyNs().find(kReference);
+    state.counters["ratio_to_1000"] = ref != perBodyNs().end() && ref->second > 0 ? ns / ref->second : 0.0;
+    delete world;
+    scene->Delete();
+}
+
+// Timed steps: enough for a steady figure, fewer for the big piles.
+void registerCount(int boxes) {
+    int steps = std::clamp(600000 / boxes, 60, 600);
+    benchmark::RegisterBenchmark("BM_StepScaling", BM_StepScaling)
+        ->Arg(boxes)
+        ->ArgName("boxes")
+        ->UseManualTime()
+        ->Iterations(steps)
+        ->Unit(benchmark::kMillisecond);
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+    // The 1,000-box reference first, so that every later count has its ratio in the same run.
+    for (int boxes : {kReference, 100, 300, 3000, 10000}) registerCount(boxes);
+    benchmark::Initialize(&argc, argv);
+    if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+    benchmark::RunSpecifiedBenchmarks();
+    benchmark::Shutdown();
+    const auto& figures = perBodyNs();
+    auto ref = figures.find(kReference);
+    if (ref == figures.end() || ref->second <= 0) return 0;
+    std::printf("\nCPU ns per awake body-step, ratio to %d boxes:\n", kReference);
+    for (const auto& f : figures)
+        std::printf("  %6d boxes: %8.1f ns  x%.2f\n", f.first, f.second, f.second / ref->second);
+    auto big = figures.find(10000);
+    if (big != figures.end())
+        std::printf("issue 12 target (10,000 within 1.5x of 1,000): %s (x%.2f)\n",
+                    big->second / ref->second <= 1.5 ? "holds" : "does not hold", big->second / ref->second);
+    return 0;
+}
