@@ -173,9 +173,15 @@ private:
     std::vector<int> m_castOrder;                          // m_cast indices grouped by sweep
     std::vector<std::pair<int, int>> m_sweepRange;         // each sweep's range in m_castOrder
     std::vector<gcol::WorldShape> m_moving, m_obstacles;
-    std::vector<int> m_obstacleOwner;     // m_cast index of each obstacle shape
-    std::vector<Vector> m_obstacleShift;  // how far it moves over the motion (another swept body's)
-    std::vector<Vector> m_sweepShift;     // each sweep's translation
+    std::vector<int> m_obstacleOwner;    // m_cast index of each obstacle shape
+    std::vector<Vector> m_obstacleShift; // how far it moves over the motion (another swept body's)
+    std::vector<Vector> m_sweepShift;    // each sweep's translation
+    struct SweepHit {
+        int obstacleSweep = -1; // the sweep moving what it hit, or -1
+        float touch = 1.0f;     // the fraction it stops at
+        Vector recede;          // how far what it hit moves away from the touch over the whole motion
+    };
+    std::vector<SweepHit> m_sweepHits;    // per sweep
     std::vector<unsigned char> m_ignored; // moving x obstacle pairs touching at the start
     bool m_notifying = false;
     bool m_populating = false;

@@ -71,6 +71,7 @@ size_t SimpleCollisionSpace::sweepBodies(BodySweep* sweeps, size_t count) {
     for (size_t i = 0; i < count; ++i) {
         sweeps[i].fraction = 1.0f;
         sweeps[i].hit = nullptr;
+        sweeps[i].carried = Vector();
         if (sweeps[i].body) m_sweepIndex.emplace_back(&sweeps[i].body->getDynamics(), int(i));
     }
     std::sort(m_sweepIndex.begin(), m_sweepIndex.end());
@@ -120,10 +121,21 @@ size_t SimpleCollisionSpace::sweepBodies(BodySweep* sweeps, size_t count) {
         m_sweepShift[i] =
             sweeps[i].body ? sweeps[i].body->getDynamics().position - sweeps[i].startPosition : Vector();
     size_t hits = 0;
+    m_sweepHits.assign(count, SweepHit());
     for (size_t i = 0; i < count; ++i) {
         if (!sweeps[i].body) continue;
         sweepOne(sweeps[i], int(i));
         if (sweeps[i].hit) ++hits;
+    }
+    // What each hit obstacle really does after the touch: a body that is not stopped moves on to the end of
+    // its motion, and as far as it moves away from the touch it draws what touched it along (so the pair is
+    // still touching for the contact solve); one stopped too (two fast bodies meeting) moves on only as far
+    // as its own stop is past the touch.
+    for (size_t i = 0; i < count; ++i) {
+        if (!sweeps[i].hit) continue;
+        const SweepHit& h = m_sweepHits[i];
+        const float obstacleStop = h.obstacleSweep >= 0 ? sweeps[size_t(h.obstacleSweep)].fraction : 1.0f;
+        sweeps[i].carried = h.recede * std::max(0.0f, obstacleStop - h.touch);
     }
     return hits;
 }
@@ -291,5 +303,9 @@ void SimpleCollisionSpace::sweepOne(BodySweep& sweep, int index) {
     float extra = approach > 0.0f ? (gap + kSkin) / approach : 0.0f;
     extra = std::max(0.0f, std::min(extra, 0.1f * minDim / travel));
     sweep.fraction = std::min(1.0f, t + extra);
-    sweep.hit = m_cast[size_t(m_obstacleOwner[size_t(hit)])].g->asInterface();
+    const CastGeometry& obstacle = m_cast[size_t(m_obstacleOwner[size_t(hit)])];
+    sweep.hit = obstacle.g->asInterface();
+    // What of the obstacle's motion takes it away from the touch: along the axis, when it recedes.
+    const Vector& shift = m_obstacleShift[size_t(hit)];
+    m_sweepHits[size_t(index)] = {obstacle.sweep, sweep.fraction, axis * std::max(0.0f, dot(shift, axis))};
 }

@@ -23,6 +23,10 @@ struct BodySweep {
     // Filled in by sweepBodies:
     float fraction = 1.0f;             // where along the motion to stop it (1: it hit nothing)
     iCollisionGeometry* hit = nullptr; // what it hit (nullptr: nothing)
+    // How far what it hit moves away from the touch after it (along the touch's normal, over the rest of
+    // the motion or up to where its own sweep stops it): the body put back at the touch and moved by this
+    // still touches it where that ends up. Zero for a fixed obstacle.
+    Vector carried;
 };
 
 class iShapeCast {

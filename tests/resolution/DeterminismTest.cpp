@@ -36,7 +36,7 @@ unsigned long long boxPile() {
 
 // The committed results: g++ and clang++ (x86-64, Debian 12) agree, in every build type: SSE2 arithmetic,
 // no FMA contraction (-ffp-contract=off), and scene code that draws its random numbers in a stated order.
-constexpr unsigned long long kShootingHash = 0xab6474f950ea00a4ull;
+constexpr unsigned long long kShootingHash = 0xe15f37ecc9027c42ull;
 constexpr unsigned long long kBoxPileHash = 0xb49ad45c69f08fc0ull;
 
 } // namespace
