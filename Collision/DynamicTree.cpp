@@ -54,13 +54,13 @@ void DynamicTree::release(int node) {
     m_free = node;
 }
 
-int DynamicTree::insert(const Aabb& box, int value) {
+int DynamicTree::insert(const Aabb& box, int value, bool place) {
     int leaf = allocate();
     Node& n = m_nodes[size_t(leaf)];
     n.box = box;
     n.value = value;
     n.height = 0;
-    attach(leaf);
+    if (place) attach(leaf);
     ++m_leaves;
     return leaf;
 }
@@ -191,6 +191,29 @@ int DynamicTree::rotate(int node) {
     u.box = unite(a.box, k.box);
     u.height = 1 + std::max(a.height, k.height);
     return up;
+}
+
+void DynamicTree::rebuild(const std::vector<int>& leaves) {
+    for (size_t i = 0; i < m_nodes.size(); ++i)
+        if (m_nodes[i].height > 0) release(int(i)); // inner nodes: free, reused below
+    m_root = leaves.empty() ? kNull : build(leaves.data(), int(leaves.size()), kNull);
+}
+
+int DynamicTree::build(const int* leaves, int count, int parent) {
+    if (count == 1) {
+        m_nodes[size_t(leaves[0])].parent = parent;
+        return leaves[0];
+    }
+    const int node = allocate();
+    const int half = count / 2;
+    const int c1 = build(leaves, half, node), c2 = build(leaves + half, count - half, node);
+    Node& n = m_nodes[size_t(node)];
+    n.parent = parent;
+    n.child1 = c1;
+    n.child2 = c2;
+    n.height = 1 + std::max(m_nodes[size_t(c1)].height, m_nodes[size_t(c2)].height);
+    n.box = unite(m_nodes[size_t(c1)].box, m_nodes[size_t(c2)].box);
+    return node;
 }
 
 bool DynamicTree::validNode(int node, int& leaves) const {

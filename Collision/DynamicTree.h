@@ -12,7 +12,6 @@
 
 #include "Shapes.h"
 
-#include <cmath>
 #include <vector>
 
 namespace gcol {
@@ -27,10 +26,13 @@ inline bool contains(const Aabb& outer, const Aabb& inner) {
            inner.max.x <= outer.max.x && inner.max.y <= outer.max.y && inner.max.z <= outer.max.z;
 }
 
+// (Plain comparisons, not std::fmin: boxes are finite, and this runs at every level of every insertion.)
 inline Aabb unite(const Aabb& a, const Aabb& b) {
+    auto lo = [](float x, float y) { return x < y ? x : y; };
+    auto hi = [](float x, float y) { return x > y ? x : y; };
     Aabb u;
-    u.min = Vector(std::fmin(a.min.x, b.min.x), std::fmin(a.min.y, b.min.y), std::fmin(a.min.z, b.min.z));
-    u.max = Vector(std::fmax(a.max.x, b.max.x), std::fmax(a.max.y, b.max.y), std::fmax(a.max.z, b.max.z));
+    u.min = Vector(lo(a.min.x, b.min.x), lo(a.min.y, b.min.y), lo(a.min.z, b.min.z));
+    u.max = Vector(hi(a.max.x, b.max.x), hi(a.max.y, b.max.y), hi(a.max.z, b.max.z));
     return u;
 }
 
@@ -41,11 +43,17 @@ class DynamicTree {
 public:
     static constexpr int kNull = -1;
 
-    // Adds a leaf with box and the caller's value; returns its id.
-    int insert(const Aabb& box, int value);
+    // Adds a leaf with box and the caller's value; returns its id. With place = false the leaf waits,
+    // outside the tree, for the next rebuild (which must list it).
+    int insert(const Aabb& box, int value, bool place = true);
     void remove(int leaf);
     // Gives a leaf a new box (re-inserted where it now fits best); its id stays.
     void move(int leaf, const Aabb& box);
+    // Bulk update, for when most leaves moved: give leaves new boxes with setLeafBox (the tree is not valid
+    // in between), then rebuild over every leaf, listed in a spatially coherent order (Morton order): a
+    // balanced tree of height ceil(log2 n), leaf ids kept, no allocation.
+    void setLeafBox(int leaf, const Aabb& box) { m_nodes[size_t(leaf)].box = box; }
+    void rebuild(const std::vector<int>& leaves);
     const Aabb& box(int leaf) const { return m_nodes[size_t(leaf)].box; }
     int value(int leaf) const { return m_nodes[size_t(leaf)].value; }
 
@@ -76,6 +84,7 @@ private:
     void refitFrom(int node); // boxes, heights and balance from node up to the root
     int rotate(int node);
     bool validNode(int node, int& leaves) const;
+    int build(const int* leaves, int count, int parent);
 
     std::vector<Node> m_nodes;
     int m_root = kNull;

@@ -50,21 +50,88 @@ void TreeBroadphase::refit(int p, const gcol::Aabb& tight) {
     Proxy& x = m_proxies[size_t(p)];
     const Vector m(kMargin, kMargin, kMargin);
     gcol::Aabb fat{tight.min - m, tight.max + m};
-    if (x.leaf == gcol::DynamicTree::kNull) {
-        x.leaf = m_tree.insert(fat, p);
-    } else {
+    if (x.leaf != gcol::DynamicTree::kNull) {
         // Motion prediction: where it went since its last fat box, it probably goes on (at most a box size).
         const Vector d = (tight.min + tight.max - x.fat.min - x.fat.max) * 0.5f;
         const Vector size = tight.max - tight.min + m;
         stretch(fat.min.x, fat.max.x, d.x, size.x);
         stretch(fat.min.y, fat.max.y, d.y, size.y);
         stretch(fat.min.z, fat.max.z, d.z, size.z);
-        m_tree.move(x.leaf, fat);
     }
     x.fat = fat;
+    x.stale = true;
     if (!x.moved) {
         x.moved = true;
         m_moveBuffer.push_back(p);
+    }
+}
+
+namespace {
+
+// 10 bits of v spread to every third bit.
+unsigned spread(unsigned v) {
+    v &= 0x3FFu;
+    v = (v | (v << 16)) & 0x030000FFu;
+    v = (v | (v << 8)) & 0x0300F00Fu;
+    v = (v | (v << 4)) & 0x030C30C3u;
+    v = (v | (v << 2)) & 0x09249249u;
+    return v;
+}
+
+} // namespace
+
+unsigned TreeBroadphase::mortonKey(int p, const gcol::Aabb& bounds, float scale) const {
+    const gcol::Aabb& f = m_proxies[size_t(p)].fat;
+    const Vector c = ((f.min + f.max) * 0.5f - bounds.min) * scale;
+    return spread(unsigned(c.x)) | spread(unsigned(c.y)) << 1 | spread(unsigned(c.z)) << 2;
+}
+
+void TreeBroadphase::applyMoves() {
+    if (m_moveBuffer.empty()) return;
+    const size_t alive = m_proxies.size() - m_freeProxies.size() - m_dead.size();
+    // Most moved: new boxes in place and one rebuild over every leaf, instead of a re-insertion each.
+    const bool bulk = m_moveBuffer.size() >= kBulkMoves && 4 * m_moveBuffer.size() >= alive;
+    gcol::Aabb bounds = m_proxies[size_t(m_moveBuffer[0])].fat;
+    m_keys.clear();
+    for (size_t p = 0; p < m_proxies.size(); ++p) {
+        const Proxy& x = m_proxies[p];
+        if (x.used && !x.dead && (bulk || x.moved)) bounds = gcol::unite(bounds, x.fat);
+    }
+    const Vector size = bounds.max - bounds.min;
+    const float extent = std::fmax(size.x, std::fmax(size.y, size.z));
+    const float scale = extent > 0.0f ? 1023.0f / extent : 0.0f;
+    if (bulk) {
+        for (size_t p = 0; p < m_proxies.size(); ++p) {
+            Proxy& x = m_proxies[p];
+            if (!x.used || x.dead) continue;
+            if (x.leaf == gcol::DynamicTree::kNull)
+                x.leaf = m_tree.insert(x.fat, int(p), false);
+            else if (x.stale)
+                m_tree.setLeafBox(x.leaf, x.fat);
+            x.stale = false;
+            m_keys.emplace_back(mortonKey(int(p), bounds, scale), int(p));
+        }
+        std::sort(m_keys.begin(), m_keys.end());
+        m_leafOrder.clear();
+        m_moveBuffer.clear();
+        for (const std::pair<unsigned, int>& k : m_keys) {
+            m_leafOrder.push_back(m_proxies[size_t(k.second)].leaf);
+            if (m_proxies[size_t(k.second)].moved) m_moveBuffer.push_back(k.second);
+        }
+        m_tree.rebuild(m_leafOrder);
+        return;
+    }
+    for (int p : m_moveBuffer) m_keys.emplace_back(mortonKey(p, bounds, scale), p);
+    std::sort(m_keys.begin(), m_keys.end());
+    for (size_t i = 0; i < m_keys.size(); ++i) m_moveBuffer[i] = m_keys[i].second;
+    for (int p : m_moveBuffer) {
+        Proxy& x = m_proxies[size_t(p)];
+        if (!x.stale || x.dead) continue;
+        x.stale = false;
+        if (x.leaf == gcol::DynamicTree::kNull)
+            x.leaf = m_tree.insert(x.fat, p);
+        else
+            m_tree.move(x.leaf, x.fat);
     }
 }
 
@@ -100,7 +167,8 @@ void TreeBroadphase::findPairs(const std::vector<SimpleCollisionSpace::Entry>& e
         Proxy& x = m_proxies[size_t(p)];
         x.entry = i;
         x.stamp = m_stamp;
-        if (x.leaf == gcol::DynamicTree::kNull || !gcol::contains(x.fat, e.box)) refit(p, e.box);
+        if ((x.leaf == gcol::DynamicTree::kNull && !x.stale) || !gcol::contains(x.fat, e.box))
+            refit(p, e.box);
         x.origin = e.origin;
         x.rotation = e.rotation;
         x.shapeVersion = e.g->shapeVersion();
@@ -120,6 +188,7 @@ void TreeBroadphase::findPairs(const std::vector<SimpleCollisionSpace::Entry>& e
 
 void TreeBroadphase::updatePairs() {
     if (m_moveBuffer.empty() && m_dead.empty()) return; // nothing moved: the pairs stand
+    applyMoves();
     m_newPairs.clear();
     for (int p : m_moveBuffer) {
         const Proxy& x = m_proxies[size_t(p)];
@@ -128,10 +197,7 @@ void TreeBroadphase::updatePairs() {
         m_tree.query(x.fat, [&](int q) {
             const Proxy& y = m_proxies[size_t(q)];
             if (q == p || (y.moved && q < p)) return; // itself, or found by q's own query
-            if (x.order < y.order)
-                m_newPairs.push_back(Pair{x.order, y.order, p, q});
-            else
-                m_newPairs.push_back(Pair{y.order, x.order, q, p});
+            m_newPairs.push_back(pairOf(x, p, y, q));
         });
     }
     std::sort(m_newPairs.begin(), m_newPairs.end());
@@ -188,11 +254,12 @@ void TreeBroadphase::syncForQuery(const std::list<iCollisionGeometry*>& all) {
         const gcol::Aabb box = boundsOf(m_shapes);
         const int p = proxyOf(g);
         Proxy& x = m_proxies[size_t(p)];
-        if (x.leaf == gcol::DynamicTree::kNull || !gcol::contains(x.fat, box)) refit(p, box);
+        if ((x.leaf == gcol::DynamicTree::kNull && !x.stale) || !gcol::contains(x.fat, box)) refit(p, box);
         x.origin = o;
         x.rotation = r;
         x.shapeVersion = g->shapeVersion();
     }
+    applyMoves();
 }
 
 void TreeBroadphase::gatherCandidates(std::vector<CollisionGeometry*>& out) {

@@ -1,6 +1,6 @@
-// DynamicTreeTest.cpp - the dynamic AABB tree against brute force: random inserts, moves and removes with a
-// fixed seed, where every box and ray query must find exactly the leaves a loop over all boxes finds, the
-// tree stays valid, and its height stays within 2.5 log2 n + 4 after 10,000 random moves.
+// DynamicTreeTest.cpp - the dynamic AABB tree against brute force: random inserts, moves, removes and bulk
+// rebuilds with a fixed seed, where every box and ray query must find exactly the leaves a loop over all
+// boxes finds, the tree stays valid, and its height stays within 2.5 log2 n + 4 after 10,000 random moves.
 #include "DynamicTree.h"
 
 #include <gtest/gtest.h>
@@ -53,6 +53,19 @@ TEST(DynamicTree, QueriesEqualBruteForceUnderRandomEdits) {
                 tree.remove(leafOf[size_t(v)]);
                 leafOf[size_t(v)] = -1;
             }
+        }
+        if (round % 500 == 250) { // the bulk path: some boxes changed in place, then one rebuild
+            std::vector<int> order;
+            for (size_t v = 0; v < leafOf.size(); ++v) {
+                if (leafOf[v] < 0) continue;
+                if (v % 3 == 0) {
+                    boxOf[v] = m.randomBox(40.0f);
+                    tree.setLeafBox(leafOf[v], boxOf[v]);
+                }
+                order.push_back(leafOf[v]);
+            }
+            tree.rebuild(order);
+            EXPECT_LE(float(tree.height()), std::ceil(std::log2(float(order.size()))));
         }
         if (round % 50 != 0) continue;
         ASSERT_TRUE(tree.valid()) << "round " << round;
