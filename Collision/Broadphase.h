@@ -12,7 +12,6 @@
 
 #include "SimpleCollisionSpace.h"
 
-#include <list>
 #include <utility>
 #include <vector>
 
@@ -23,11 +22,11 @@ public:
 
     virtual void findPairs(const std::vector<SimpleCollisionSpace::Entry>& entries,
                            std::vector<EntryPair>& out) = 0;
-    // Geometries of all (the space's list) that may meet box at their current pose, or the segment origin
+    // Geometries of all (the space's members) that may meet box at their current pose, or the segment origin
     // + t * dir (0 <= t <= maxT), in the order of all.
-    virtual void overlapCandidates(const std::list<iCollisionGeometry*>& all, const gcol::Aabb& box,
+    virtual void overlapCandidates(const std::vector<CollisionGeometry*>& all, const gcol::Aabb& box,
                                    std::vector<CollisionGeometry*>& out) = 0;
-    virtual void rayCandidates(const std::list<iCollisionGeometry*>& all, const Vector& origin,
+    virtual void rayCandidates(const std::vector<CollisionGeometry*>& all, const Vector& origin,
                                const Vector& dir, float maxT, std::vector<CollisionGeometry*>& out) = 0;
     // g is leaving the space (its space state still names its proxy).
     virtual void forget(CollisionGeometry* g) = 0;

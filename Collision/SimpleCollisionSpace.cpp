@@ -39,6 +39,7 @@ bool SimpleCollisionSpace::add(iCollisionGeometry* o) {
         old->remove(o); // a geometry is in one space at a time: adding moves it
     }
     m_geometry.push_back(o);
+    m_members.push_back(g);
     g->setSpace(this);
     g->spaceState() = CollisionGeometry::SpaceState();
     g->spaceState().order = ++m_joined;
@@ -64,6 +65,7 @@ void SimpleCollisionSpace::remove(iCollisionGeometry* o) {
 
 void SimpleCollisionSpace::removeNow(CollisionGeometry* g) {
     m_geometry.remove(g->asInterface());
+    m_members.erase(std::find(m_members.begin(), m_members.end(), g));
     m_broadphase->forget(g);
     forgetEventsOf(g);
     // The contact list outlives the call that built it (a scene reads it after its force generators ran,
@@ -211,9 +213,9 @@ void SimpleCollisionSpace::populateContactList(float delta) {
     m_shapes.clear();
     m_notices.clear();
     const bool continuous = delta > 0.0f && std::isfinite(delta) && m_samplesPerSecond > 0;
-    for (iCollisionGeometry* o : m_geometry) {
+    for (CollisionGeometry* g : m_members) {
         Entry e;
-        if (!gatherEntry(CollisionGeometry::from(o), continuous, e)) continue;
+        if (!gatherEntry(g, continuous, e)) continue;
         e.g->spaceState().call = m_call;
         e.g->spaceState().entry = int(m_entries.size());
         m_entries.push_back(e);

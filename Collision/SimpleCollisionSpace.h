@@ -154,6 +154,7 @@ private:
     std::unique_ptr<Broadphase> m_broadphase;
     unsigned long long m_joined = 0; // geometries added so far (SpaceState::order)
     std::list<iCollisionGeometry*> m_geometry;
+    std::vector<CollisionGeometry*> m_members; // the same geometry in the same order, without a cast each
     std::vector<CollisionContact> m_contacts;
     std::vector<unsigned> m_features;
     // Scratch reused between calls.

@@ -27,13 +27,12 @@ void SweepAndPrune::findPairs(const std::vector<SimpleCollisionSpace::Entry>& en
     }
 }
 
-void SweepAndPrune::overlapCandidates(const std::list<iCollisionGeometry*>& all, const gcol::Aabb&,
+void SweepAndPrune::overlapCandidates(const std::vector<CollisionGeometry*>& all, const gcol::Aabb&,
                                       std::vector<CollisionGeometry*>& out) {
-    out.clear();
-    for (iCollisionGeometry* g : all) out.push_back(CollisionGeometry::from(g));
+    out.assign(all.begin(), all.end());
 }
 
-void SweepAndPrune::rayCandidates(const std::list<iCollisionGeometry*>& all, const Vector&, const Vector&,
+void SweepAndPrune::rayCandidates(const std::vector<CollisionGeometry*>& all, const Vector&, const Vector&,
                                   float, std::vector<CollisionGeometry*>& out) {
     overlapCandidates(all, gcol::Aabb(), out);
 }

@@ -9,9 +9,9 @@ class SweepAndPrune final : public Broadphase {
 public:
     void findPairs(const std::vector<SimpleCollisionSpace::Entry>& entries,
                    std::vector<EntryPair>& out) override;
-    void overlapCandidates(const std::list<iCollisionGeometry*>& all, const gcol::Aabb& box,
+    void overlapCandidates(const std::vector<CollisionGeometry*>& all, const gcol::Aabb& box,
                            std::vector<CollisionGeometry*>& out) override;
-    void rayCandidates(const std::list<iCollisionGeometry*>& all, const Vector& origin, const Vector& dir,
+    void rayCandidates(const std::vector<CollisionGeometry*>& all, const Vector& origin, const Vector& dir,
                        float maxT, std::vector<CollisionGeometry*>& out) override;
     void forget(CollisionGeometry*) override {}
 

@@ -229,10 +229,9 @@ void TreeBroadphase::updatePairs() {
     m_dead.clear();
 }
 
-void TreeBroadphase::syncForQuery(const std::list<iCollisionGeometry*>& all) {
+void TreeBroadphase::syncForQuery(const std::vector<CollisionGeometry*>& all) {
     m_queryPlanes.clear();
-    for (iCollisionGeometry* ig : all) {
-        CollisionGeometry* g = CollisionGeometry::from(ig);
+    for (CollisionGeometry* g : all) {
         if (g->isPlane()) {
             m_queryPlanes.push_back(g);
             continue;
@@ -271,7 +270,7 @@ void TreeBroadphase::gatherCandidates(std::vector<CollisionGeometry*>& out) {
     });
 }
 
-void TreeBroadphase::overlapCandidates(const std::list<iCollisionGeometry*>& all, const gcol::Aabb& box,
+void TreeBroadphase::overlapCandidates(const std::vector<CollisionGeometry*>& all, const gcol::Aabb& box,
                                        std::vector<CollisionGeometry*>& out) {
     syncForQuery(all);
     m_hits.clear();
@@ -280,7 +279,7 @@ void TreeBroadphase::overlapCandidates(const std::list<iCollisionGeometry*>& all
     gatherCandidates(out);
 }
 
-void TreeBroadphase::rayCandidates(const std::list<iCollisionGeometry*>& all, const Vector& origin,
+void TreeBroadphase::rayCandidates(const std::vector<CollisionGeometry*>& all, const Vector& origin,
                                    const Vector& dir, float maxT, std::vector<CollisionGeometry*>& out) {
     syncForQuery(all);
     m_hits.clear();

@@ -28,9 +28,9 @@ public:
 
     void findPairs(const std::vector<SimpleCollisionSpace::Entry>& entries,
                    std::vector<EntryPair>& out) override;
-    void overlapCandidates(const std::list<iCollisionGeometry*>& all, const gcol::Aabb& box,
+    void overlapCandidates(const std::vector<CollisionGeometry*>& all, const gcol::Aabb& box,
                            std::vector<CollisionGeometry*>& out) override;
-    void rayCandidates(const std::list<iCollisionGeometry*>& all, const Vector& origin, const Vector& dir,
+    void rayCandidates(const std::vector<CollisionGeometry*>& all, const Vector& origin, const Vector& dir,
                        float maxT, std::vector<CollisionGeometry*>& out) override;
     void forget(CollisionGeometry* g) override;
 
@@ -72,7 +72,7 @@ private:
     unsigned mortonKey(int p, const gcol::Aabb& bounds, float scale) const;
     void kill(int p);
     void updatePairs();
-    void syncForQuery(const std::list<iCollisionGeometry*>& all);
+    void syncForQuery(const std::vector<CollisionGeometry*>& all);
     void gatherCandidates(std::vector<CollisionGeometry*>& out);
 
     gcol::DynamicTree m_tree;

@@ -8,6 +8,8 @@
 // a 60 Hz step: most stay inside their fat boxes), 2 every box jumped 0.5 m (every one leaves its fat box).
 // BM_SpaceSimpleVsOctree: populateContactList of the simple and the octree space over twin geometry on the
 // same bodies (range as above; continuous sampling on).
+// BM_QueriesSimpleVsOctree: 100 ray casts (20 m) and 100 sphere overlaps (r 2 m) in each space, bodies
+// resting (range(0): boxes; sparse).
 #include "DefaultSpace.h"
 #include "MathEigen.h"
 #include "SimpleCollisionSpace.h"
@@ -15,6 +17,7 @@
 #include "TreeBroadphase.h"
 #include "UserBody.h"
 #include "iCOBB.h"
+#include "iCollisionQueries.h"
 #include "iOctreeCollisionSpace.h"
 #include "iSimpleCollisionSpace.h"
 
@@ -158,5 +161,54 @@ BENCHMARK(BM_SpaceSimpleVsOctree)
     ->ArgsProduct({{1000, 10000}, {0, 1}, {0, 1, 2}})
     ->UseManualTime()
     ->Unit(benchmark::kMillisecond);
+
+void BM_QueriesSimpleVsOctree(benchmark::State& state) {
+    const int n = int(state.range(0));
+    Boxes boxes(n, false);
+    iCollisionSpace* simple = CreateSimpleCollisionSpace(60);
+    iCollisionSpace* octree = CreateOctreeCollisionSpace(60);
+    std::vector<iCollisionGeometry*> geoms;
+    for (iCollisionSpace* space : {simple, octree}) {
+        DefaultSpace joins(space);
+        for (auto& b : boxes.bodies) geoms.push_back(CreateCOBB(b.get(), Vector(0.5f, 0.5f, 0.5f)));
+        space->populateContactList(1.0f / 60);
+    }
+    const float side = std::cbrt(float(n)) * 4.0f;
+    std::vector<Vector> origins, dirs;
+    for (int i = 0; i < 100; ++i) {
+        origins.push_back(Vector(boxes.uni(0, side), boxes.uni(0, side), boxes.uni(0, side)));
+        dirs.push_back(Vector(boxes.uni(-1, 1), boxes.uni(-1, 1), boxes.uni(-1, 1)));
+    }
+    std::vector<iCollisionGeometry*> found;
+    size_t hits[2] = {0, 0};
+    auto run = [&](iCollisionSpace* space, size_t& h) {
+        iCollisionQueries* q = queriesOf(space);
+        for (int i = 0; i < 100; ++i) {
+            RayHit hit;
+            h += q->rayCast(origins[size_t(i)], dirs[size_t(i)], 20.0f, hit) ? 1 : 0;
+            h += q->overlapSphere(origins[size_t(i)], 2.0f, found);
+        }
+    };
+    double simpleTime = 0, octreeTime = 0;
+    for (auto _ : state) {
+        auto t0 = Clock::now();
+        run(simple, hits[0]);
+        auto t1 = Clock::now();
+        run(octree, hits[1]);
+        auto t2 = Clock::now();
+        simpleTime += seconds(t0, t1);
+        octreeTime += seconds(t1, t2);
+        state.SetIterationTime(seconds(t1, t2));
+    }
+    const double iterations = double(state.iterations());
+    state.counters["simple_ms"] = 1e3 * simpleTime / iterations;
+    state.counters["octree_ms"] = 1e3 * octreeTime / iterations;
+    state.counters["simple_over_octree"] = simpleTime / octreeTime;
+    if (hits[0] != hits[1]) state.SkipWithError("the spaces answered differently");
+    for (iCollisionGeometry* g : geoms) g->Delete();
+    simple->Delete();
+    octree->Delete();
+}
+BENCHMARK(BM_QueriesSimpleVsOctree)->Arg(1000)->Arg(10000)->UseManualTime()->Unit(benchmark::kMillisecond);
 
 } // namespace
