@@ -10,10 +10,10 @@
 // per call, and only geometries that left theirs look for new pairs, so finding pairs when little moved
 // costs in proportion to the pairs. Ray and overlap queries descend the tree (after a pose compare per
 // geometry) instead of testing every geometry.
-// Measured (bench/collision BroadphaseBench.cpp, 10,000 boxes of 1 m): pair finding 15-20x faster than the
-// simple space's sort-and-sweep when nothing moved, 2.5-4.5x when every box drifted 2 cm, and 0.6-0.9x
-// (slower) when every box jumped 0.5 m; whole populateContactList calls 2.3-3.3x faster on a sparse scene,
-// 1.05-1.25x on a dense one (where the exact pair tests dominate).
+// Measured (bench/collision BroadphaseBench.cpp, 10,000 boxes of 1 m): pair finding 10-21x faster than the
+// simple space's sort-and-sweep when nothing moved, 4-4.5x when every box drifted 2 cm, and 0.75-0.9x
+// (slower) when every box jumped 0.5 m; whole populateContactList calls 2.4-3.4x faster on a sparse scene,
+// 1.15-1.3x on a dense one (where the exact pair tests dominate); ray and overlap queries 3.2-3.6x faster.
 // Choose it for thousands of bodies, most of them resting or moving a little each step.
 #pragma once
 
