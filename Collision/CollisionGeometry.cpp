@@ -28,6 +28,7 @@ void CollisionGeometry::bind(iRigidBody* rb) {
 }
 
 void CollisionGeometry::shapeChanged() {
+    ++m_shapeVersion;
     if (m_body) m_body->getDynamics().setShapeMass(this, shapeMass());
 }
 

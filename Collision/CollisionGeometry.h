@@ -49,6 +49,8 @@ public:
         unsigned previousTeleports = 0; // the body's (and its root's) RBDynamics::teleports then
         unsigned long long call = 0;    // the space's populate call that last gathered it ...
         int entry = -1;                 // ... and its entry there
+        unsigned long long order = 0;   // when it joined the space (increasing along the space's list)
+        int proxy = -1;                 // its broadphase proxy, if the space's broadphase keeps one
         Vector previousOrigin;
         Matrix previousRotation = Matrix(1);
     };
@@ -56,6 +58,9 @@ public:
     void setSpace(iCollisionSpace* s) { m_space = s; }
     iCollisionSpace* space() const { return m_space; }
     iRigidBody* body() const { return m_body; }
+    // Changes whenever the geometry's shapes change (a radius, a child): a pose and this version tell its
+    // bounds.
+    unsigned shapeVersion() const { return m_shapeVersion; }
     // Binds to rb (nullptr: none). The geometry's solid moves from the old body's shape to rb's, so an
     // inertia the engine derives follows it (RBDynamics.h).
     void bind(iRigidBody* rb);
@@ -76,6 +81,7 @@ private:
     iRigidBody* m_body = nullptr;
     iCollisionSpace* m_space = nullptr;
     SpaceState m_state;
+    unsigned m_shapeVersion = 0;
     static void onBodyDestroyed(const iRigidBody* dying, void* self);
 };
 

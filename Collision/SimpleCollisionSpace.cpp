@@ -1,8 +1,12 @@
-// SimpleCollisionSpace.cpp - membership, per-call pose gathering and the sort-and-sweep broad phase of the
-// all-pairs space. The pair tests are in ContinuousPairTest.cpp, listeners in SpaceListeners.cpp, queries
-// in SpaceQueries.cpp.
+// SimpleCollisionSpace.cpp - membership, per-call pose gathering and the populate call of the collision
+// space; the candidate pairs come from its broadphase (SweepAndPrune.cpp, TreeBroadphase.cpp). The pair
+// tests are in ContinuousPairTest.cpp, listeners in SpaceListeners.cpp, queries in SpaceQueries.cpp.
 #include "SimpleCollisionSpace.h"
+#include "Broadphase.h"
 #include "MathEigen.h"
+#include "SweepAndPrune.h"
+#include "TreeBroadphase.h"
+#include "iOctreeCollisionSpace.h"
 #include "iRigidBody.h"
 #include "iSimpleCollisionSpace.h"
 #include "iUtilities.h"
@@ -10,7 +14,8 @@
 #include <algorithm>
 #include <cmath>
 
-SimpleCollisionSpace::SimpleCollisionSpace(size_t samplesPerSecond) : m_samplesPerSecond(samplesPerSecond) {}
+SimpleCollisionSpace::SimpleCollisionSpace(size_t samplesPerSecond, std::unique_ptr<Broadphase> broadphase)
+    : m_samplesPerSecond(samplesPerSecond), m_broadphase(std::move(broadphase)) {}
 
 SimpleCollisionSpace::~SimpleCollisionSpace() = default;
 
@@ -34,8 +39,10 @@ bool SimpleCollisionSpace::add(iCollisionGeometry* o) {
         old->remove(o); // a geometry is in one space at a time: adding moves it
     }
     m_geometry.push_back(o);
+    m_members.push_back(g);
     g->setSpace(this);
     g->spaceState() = CollisionGeometry::SpaceState();
+    g->spaceState().order = ++m_joined;
     return true;
 }
 
@@ -58,6 +65,8 @@ void SimpleCollisionSpace::remove(iCollisionGeometry* o) {
 
 void SimpleCollisionSpace::removeNow(CollisionGeometry* g) {
     m_geometry.remove(g->asInterface());
+    m_members.erase(std::find(m_members.begin(), m_members.end(), g));
+    m_broadphase->forget(g);
     forgetEventsOf(g);
     // The contact list outlives the call that built it (a scene reads it after its force generators ran,
     // and they may delete geometry): no contact may name a geometry that is no longer here.
@@ -204,45 +213,18 @@ void SimpleCollisionSpace::populateContactList(float delta) {
     m_shapes.clear();
     m_notices.clear();
     const bool continuous = delta > 0.0f && std::isfinite(delta) && m_samplesPerSecond > 0;
-    for (iCollisionGeometry* o : m_geometry) {
+    for (CollisionGeometry* g : m_members) {
         Entry e;
-        if (!gatherEntry(CollisionGeometry::from(o), continuous, e)) continue;
+        if (!gatherEntry(g, continuous, e)) continue;
         e.g->spaceState().call = m_call;
         e.g->spaceState().entry = int(m_entries.size());
         m_entries.push_back(e);
     }
-    // Sort and sweep along x; planes (unbounded) meet every bounded entry.
-    m_order.clear();
-    m_planes.clear();
-    for (int i = 0; i < int(m_entries.size()); ++i)
-        (m_entries[size_t(i)].plane ? m_planes : m_order).push_back(i);
-    std::sort(m_order.begin(), m_order.end(), [this](int a, int b) {
-        float ma = m_entries[size_t(a)].box.min.x, mb = m_entries[size_t(b)].box.min.x;
-        return ma < mb || (ma == mb && a < b);
-    });
+    // Candidate pairs (planes first: when the contact budget fills, the ground is the last thing to lose).
+    m_broadphase->findPairs(m_entries, m_pairs);
     const float stepDelta = continuous ? delta : 0.0f;
-    // Planes first: when the contact budget fills, the ground is the last thing to lose.
-    for (int p : m_planes)
-        for (int i : m_order) {
-            if (p < i)
-                testPair(m_entries[size_t(p)], m_entries[size_t(i)], stepDelta);
-            else
-                testPair(m_entries[size_t(i)], m_entries[size_t(p)], stepDelta);
-        }
-    for (size_t oi = 0; oi < m_order.size(); ++oi) {
-        const Entry& a = m_entries[size_t(m_order[oi])];
-        for (size_t oj = oi + 1; oj < m_order.size(); ++oj) {
-            const Entry& b = m_entries[size_t(m_order[oj])];
-            if (b.box.min.x > a.box.max.x) break;
-            if (b.box.min.y > a.box.max.y || a.box.min.y > b.box.max.y || b.box.min.z > a.box.max.z ||
-                a.box.min.z > b.box.max.z)
-                continue;
-            if (m_order[oi] < m_order[oj])
-                testPair(a, b, stepDelta);
-            else
-                testPair(b, a, stepDelta);
-        }
-    }
+    for (const std::pair<int, int>& p : m_pairs)
+        testPair(m_entries[size_t(p.first)], m_entries[size_t(p.second)], stepDelta);
     if (m_droppedPairs > 0 && !m_reportedDrops) {
         m_reportedDrops = true;
         error(
@@ -273,5 +255,9 @@ bool SimpleCollisionSpace::setContactBudget(size_t maxContacts) {
 }
 
 extern "C" iCollisionSpace* CreateSimpleCollisionSpace(size_t samplesPerSecond) {
-    return new SimpleCollisionSpace(samplesPerSecond);
+    return new SimpleCollisionSpace(samplesPerSecond, std::make_unique<SweepAndPrune>());
+}
+
+extern "C" iCollisionSpace* CreateOctreeCollisionSpace(size_t samplesPerSecond) {
+    return new SimpleCollisionSpace(samplesPerSecond, std::make_unique<TreeBroadphase>());
 }

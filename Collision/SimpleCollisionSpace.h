@@ -1,12 +1,13 @@
-// SimpleCollisionSpace.h - the all-pairs collision space (CreateSimpleCollisionSpace): the reference every
-// faster space is checked against.
+// SimpleCollisionSpace.h - the collision space of this package: with sort-and-sweep it is the simple space
+// (CreateSimpleCollisionSpace), the reference every faster space is checked against; with the persistent
+// tree broadphase it is the octree space (CreateOctreeCollisionSpace). Only step 2 differs (Broadphase.h).
 //
 // populateContactList(delta):
 //  1. reads every geometry's pose from its body (a geometry without a body, except a plane, or with a
 //     non-finite pose is skipped; a non-finite pose is reported once with error());
-//  2. finds candidate pairs by sort-and-sweep over world AABBs (swept over the motion since the previous
-//     call when sampling is on); AABBs are conservative, so the pairs tested are a superset of the
-//     overlapping ones and the result equals plain all-pairs;
+//  2. finds candidate pairs, the ones whose world AABBs (swept over the motion since the previous call when
+//     sampling is on) overlap, with its broadphase (sort-and-sweep or the tree); AABBs are conservative, so
+//     the pairs tested are a superset of the overlapping ones and the result equals plain all-pairs;
 //  3. skips pairs on the same body and pairs of two bodies that are each PHYS_FixedInSpace or sleeping
 //     (RBDynamics::sleeping; a bodiless plane is fixed);
 //  4. runs the exact pair test at the current pose, and when nothing touches and the pair moved fast,
@@ -28,11 +29,13 @@
 
 #include <cstdint>
 #include <list>
+#include <memory>
 #include <utility>
 #include <vector>
 
 class iRigidBody;
 class iCollisionListener;
+class Broadphase;
 
 class SimpleCollisionSpace final : public iCollisionSpace,
                                    public iCollisionQueries,
@@ -41,7 +44,7 @@ class SimpleCollisionSpace final : public iCollisionSpace,
                                    public iContactBudget,
                                    public iShapeCast {
 public:
-    explicit SimpleCollisionSpace(size_t samplesPerSecond);
+    SimpleCollisionSpace(size_t samplesPerSecond, std::unique_ptr<Broadphase> broadphase);
 
     // A geometry is in at most one space: adding one that is in another space moves it here. Returns false
     // when it is already here, is null, or is not a geometry of this package.
@@ -78,6 +81,8 @@ public:
     // otherwise false and the geometry deletes itself.
     bool deferDelete(CollisionGeometry* g);
     bool isNotifying() const { return m_notifying; }
+    // Its candidate-pair stage (for tests and benchmarks: TreeBroadphase counts its tree queries).
+    Broadphase& broadphase() { return *m_broadphase; }
 
     // Per-geometry working state for one populate call.
     struct Entry {
@@ -147,13 +152,18 @@ private:
     bool m_reportedDrops = false;
     bool m_cut = false; // the pair being tested lost contacts to the budget
     size_t m_samplesPerSecond;
+    std::unique_ptr<Broadphase> m_broadphase;
+    unsigned long long m_joined = 0; // geometries added so far (SpaceState::order)
     std::list<iCollisionGeometry*> m_geometry;
+    std::vector<CollisionGeometry*> m_members; // the same geometry in the same order, without a cast each
     std::vector<CollisionContact> m_contacts;
     std::vector<unsigned> m_features;
     // Scratch reused between calls.
     std::vector<Entry> m_entries;
     std::vector<gcol::WorldShape> m_shapes, m_scratchA, m_scratchB;
-    std::vector<int> m_order, m_planes;
+    std::vector<int> m_order;                 // notices by body pair (SpaceListeners.cpp)
+    std::vector<std::pair<int, int>> m_pairs; // this call's candidate pairs (entry indices), in test order
+    std::vector<CollisionGeometry*> m_candidates; // a query's
     std::vector<Notice> m_notices;  // this call's touching pairs, then the resting ones carried over
     std::vector<Notice> m_touching; // the pairs touching at the last call
     std::vector<Notice> m_held;     // pairs that touched since the last delivery (events held)

@@ -1,5 +1,7 @@
-// SpaceQueries.cpp - ray casts and overlap queries of the simple space, against every geometry's shapes at
-// its body's current pose (brute force, like the space itself).
+// SpaceQueries.cpp - ray casts and overlap queries of the space: its broadphase names the candidates (every
+// geometry for sort-and-sweep, the tree's hits for the octree space), in the space's order; each is tested
+// exactly against its shapes at its body's current pose.
+#include "Broadphase.h"
 #include "SimpleCollisionSpace.h"
 #include "iUtilities.h"
 
@@ -30,7 +32,9 @@ bool SimpleCollisionSpace::rayCast(const Vector& origin, const Vector& direction
     float best = maxDistance;
     bool found = false;
     std::vector<gcol::WorldShape>& shapes = m_scratchA;
-    for (iCollisionGeometry* ig : m_geometry) {
+    m_broadphase->rayCandidates(m_members, origin, dir, maxDistance, m_candidates);
+    for (CollisionGeometry* g : m_candidates) {
+        iCollisionGeometry* ig = g->asInterface();
         if (!queryShapes(ig, shapes)) continue;
         for (const gcol::WorldShape& s : shapes) {
             float t;
@@ -50,12 +54,13 @@ bool SimpleCollisionSpace::rayCast(const Vector& origin, const Vector& direction
 
 namespace {
 
-size_t overlapWith(SimpleCollisionSpace& space, const std::list<iCollisionGeometry*>& all,
+size_t overlapWith(SimpleCollisionSpace& space, const std::vector<CollisionGeometry*>& candidates,
                    const gcol::WorldShape& query, std::vector<gcol::WorldShape>& shapes,
                    bool (SimpleCollisionSpace::*get)(iCollisionGeometry*, std::vector<gcol::WorldShape>&),
                    std::vector<iCollisionGeometry*>& out) {
     out.clear();
-    for (iCollisionGeometry* ig : all) {
+    for (CollisionGeometry* g : candidates) {
+        iCollisionGeometry* ig = g->asInterface();
         if (!(space.*get)(ig, shapes)) continue;
         for (const gcol::WorldShape& s : shapes)
             if (gcol::shapesOverlap(query, s)) {
@@ -79,7 +84,10 @@ size_t SimpleCollisionSpace::overlapSphere(const Vector& centre, float radius,
     q.kind = gcol::ShapeKind::Sphere;
     q.sphere.centre = centre;
     q.sphere.radius = radius;
-    return overlapWith(*this, m_geometry, q, m_scratchA, &SimpleCollisionSpace::queryShapes, out);
+    gcol::Aabb box;
+    gcol::shapeAabb(q, box);
+    m_broadphase->overlapCandidates(m_members, box, m_candidates);
+    return overlapWith(*this, m_candidates, q, m_scratchA, &SimpleCollisionSpace::queryShapes, out);
 }
 
 size_t SimpleCollisionSpace::overlapBox(const Vector& centre, const Matrix& orientation,
@@ -97,7 +105,10 @@ size_t SimpleCollisionSpace::overlapBox(const Vector& centre, const Matrix& orie
     q.box.axis[1] = orientation.direction('y');
     q.box.axis[2] = orientation.direction('z');
     q.box.halfExtents = halfExtents;
-    return overlapWith(*this, m_geometry, q, m_scratchA, &SimpleCollisionSpace::queryShapes, out);
+    gcol::Aabb box;
+    gcol::shapeAabb(q, box);
+    m_broadphase->overlapCandidates(m_members, box, m_candidates);
+    return overlapWith(*this, m_candidates, q, m_scratchA, &SimpleCollisionSpace::queryShapes, out);
 }
 
 size_t SimpleCollisionSpace::overlapAABB(const Vector& min, const Vector& max,

@@ -85,9 +85,9 @@ size_t SimpleCollisionSpace::sweepBodies(BodySweep* sweeps, size_t count) {
     m_cast.clear();
     std::vector<int>& perSweep = m_castOrder; // first used as a count per sweep
     perSweep.assign(count + 1, 0);
-    for (iCollisionGeometry* o : m_geometry) {
+    for (CollisionGeometry* g : m_members) {
         CastGeometry c;
-        c.g = CollisionGeometry::from(o);
+        c.g = g;
         c.sweep = -1;
         c.posed = false;
         if (!c.g->body()) {

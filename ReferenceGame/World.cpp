@@ -16,7 +16,8 @@
 #include <algorithm>
 #include <cmath>
 
-World::World(iPhysicsScene* scene) : m_scene(scene), m_space(CreateSimpleCollisionSpace()) {
+World::World(iPhysicsScene* scene, iCollisionSpace* space)
+    : m_scene(scene), m_space(space ? space : CreateSimpleCollisionSpace()) {
     m_scene->setNewGlobalCollisionSpace(m_space);
 }
 

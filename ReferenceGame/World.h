@@ -14,8 +14,9 @@ class iCollisionGeometry;
 
 class World {
 public:
-    // Creates a simple collision space and makes it the scene's (and the default for new geometry).
-    explicit World(iPhysicsScene* scene);
+    // Makes space (by default a new simple collision space) the scene's and the default for new geometry;
+    // the world owns it.
+    explicit World(iPhysicsScene* scene, iCollisionSpace* space = nullptr);
     World(const World&) = delete;
     World& operator=(const World&) = delete;
     // Deletes every shape and body it built and its space (the physics scene stays).

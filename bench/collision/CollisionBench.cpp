@@ -1,7 +1,8 @@
 // CollisionBench.cpp - what the collision detector costs: pair tests per second per shape pair (the
 // sphere-sphere figure is the baseline the others are compared with) and populateContactList for 1,000 and
 // 5,000 bodies in the simple space, sparse (few contacts) and dense (several contacts per body), at rest and
-// moving (continuous sampling at work).
+// moving (continuous sampling at work). Pair finding alone (sort-and-sweep against the persistent tree) and
+// whole calls of the simple and octree spaces on 1,000 and 10,000 boxes are in BroadphaseBench.cpp.
 #include "DefaultSpace.h"
 #include "MathEigen.h"
 #include "Narrowphase.h"

@@ -1,5 +1,6 @@
-// AllocationTest.cpp - after warm-up, populateContactList does not allocate: the contact list, the working
-// arrays and the listener snapshot keep their storage between calls. Counted by replacing the global
+// AllocationTest.cpp - after warm-up, populateContactList does not allocate, in the simple space and in the
+// octree space (whose tree nodes, proxies and pair set are reused): the contact list, the working arrays and
+// the listener snapshot keep their storage between calls. Counted by replacing the global
 // operator new in this test program.
 #include "DefaultSpace.h"
 #include "UserBody.h"
@@ -7,6 +8,7 @@
 #include "iCSphere.h"
 #include "iCollisionListener.h"
 #include "iCollisionSpace.h"
+#include "iOctreeCollisionSpace.h"
 #include "iSimpleCollisionSpace.h"
 
 #include <gtest/gtest.h>
@@ -47,8 +49,9 @@ struct Counter final : iCollisionListener {
 };
 } // namespace
 
-TEST(Allocation, PopulateDoesNotAllocateAfterWarmUp) {
-    iCollisionSpace* space = CreateSimpleCollisionSpace(60);
+namespace {
+
+void populateDoesNotAllocateAfterWarmUp(iCollisionSpace* space) {
     DefaultSpace joins(space); // new geometry joins it
     std::vector<std::unique_ptr<UserBody>> bodies;
     std::vector<iCollisionGeometry*> geoms;
@@ -78,4 +81,13 @@ TEST(Allocation, PopulateDoesNotAllocateAfterWarmUp) {
     EXPECT_GT(counter.hits, 0);
     for (iCollisionGeometry* g : geoms) g->Delete();
     space->Delete();
+}
+
+} // namespace
+
+TEST(Allocation, PopulateDoesNotAllocateAfterWarmUp) {
+    populateDoesNotAllocateAfterWarmUp(CreateSimpleCollisionSpace(60));
+}
+TEST(Allocation, OctreePopulateDoesNotAllocateAfterWarmUp) {
+    populateDoesNotAllocateAfterWarmUp(CreateOctreeCollisionSpace(60));
 }

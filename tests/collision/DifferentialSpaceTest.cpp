@@ -1,10 +1,20 @@
-// DifferentialSpaceTest.cpp - the simple space against brute force (SpaceDifferential.h) on random scenes.
-// A future space adds one line per scene here with its own factory.
+// DifferentialSpaceTest.cpp - every space against brute force (SpaceDifferential.h) on random scenes, and
+// the octree space against the simple space over many calls with moves, teleports, sleeping, fixing, adds
+// and removes between them.
 #include "SpaceDifferential.h"
+#include "iOctreeCollisionSpace.h"
 #include "iSimpleCollisionSpace.h"
 
 namespace {
 iCollisionSpace* makeSimple() { return CreateSimpleCollisionSpace(); }
+iCollisionSpace* makeOctree() { return CreateOctreeCollisionSpace(); }
+using spacediff::Scene;
+
+void allScenes(iCollisionSpace* (*make)(), float moveBy = 0.0f) {
+    for (Scene scene : {Scene::Sparse, Scene::Dense, Scene::Mixed, Scene::MostlyFixed})
+        for (unsigned seed = 1; seed <= 5; ++seed)
+            spacediff::checkAgainstBruteForce(make, scene, seed, 300, moveBy);
+}
 } // namespace
 
 TEST(DifferentialSpace, SimpleSparse) {
@@ -30,4 +40,25 @@ TEST(DifferentialSpace, SimpleWithoutSampling) {
 TEST(DifferentialSpace, SimpleMovingWithSampling) {
     for (unsigned seed = 1; seed <= 5; ++seed)
         spacediff::checkAgainstBruteForce(makeSimple, spacediff::Scene::Dense, seed, 300, 2.0f);
+}
+
+TEST(DifferentialSpace, OctreeEveryScene) { allScenes(makeOctree); }
+TEST(DifferentialSpace, OctreeWithoutSampling) {
+    auto make = [] { return CreateOctreeCollisionSpace(0); };
+    spacediff::checkAgainstBruteForce(make, spacediff::Scene::Dense, 9, 300);
+}
+TEST(DifferentialSpace, OctreeMovingWithSampling) {
+    for (unsigned seed = 1; seed <= 5; ++seed)
+        spacediff::checkAgainstBruteForce(makeOctree, spacediff::Scene::Dense, seed, 300, 2.0f);
+}
+// The octree space beside the simple one: 60 calls per scene, something changing between most of them.
+TEST(DifferentialSpace, OctreeEqualsSimpleOverManyCalls) {
+    for (Scene scene : {Scene::Sparse, Scene::Dense, Scene::Mixed, Scene::MostlyFixed})
+        for (unsigned seed = 1; seed <= 3; ++seed)
+            spacediff::checkAgainstReference(makeOctree, makeSimple, scene, seed, 200, 60);
+}
+TEST(DifferentialSpace, OctreeEqualsSimpleWithoutSampling) {
+    auto make = [] { return CreateOctreeCollisionSpace(0); };
+    auto reference = [] { return CreateSimpleCollisionSpace(0); };
+    spacediff::checkAgainstReference(make, reference, Scene::Dense, 4, 200, 40);
 }

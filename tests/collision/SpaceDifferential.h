@@ -2,6 +2,9 @@
 // dense, mixed sizes, fixed bodies, shared bodies, planes, bodiless geometry) where the space's contact
 // list must name exactly the geometry pairs a brute-force loop over the pure pair functions finds: every
 // overlapping pair, none twice, none false. Reusable: pass any space factory.
+// checkAgainstReference runs a space beside a reference space (the simple one) over many calls on twin
+// geometries of the same bodies, with moves, teleports, sleeping, fixing, adds and removes between calls:
+// each call's contacts (per pair, in order, bit for bit) and ray and overlap queries must be the same.
 #pragma once
 
 #include "DefaultSpace.h"
@@ -11,11 +14,13 @@
 #include "iCOBB.h"
 #include "iCPlane.h"
 #include "iCSphere.h"
+#include "iCollisionQueries.h"
 #include "iCollisionSpace.h"
 #include "iContactFeatures.h"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <functional>
 #include <map>
 #include <memory>
@@ -166,6 +171,149 @@ inline void checkAgainstBruteForce(const std::function<iCollisionSpace*()>& make
     }
     for (iCollisionGeometry* g : geoms) g->Delete();
     space->Delete();
+}
+
+// One geometry per space of the same shape on the same body; slot i of each twin list names the same one.
+struct Twins {
+    std::vector<iCollisionGeometry*> tested, reference;
+};
+
+// Contacts by the twin slots of their geometry pair (as reported: g1's slot first), each pair's contacts in
+// the order listed, with their feature ids.
+using ContactsByPair = std::map<std::pair<int, int>, std::vector<std::vector<float>>>;
+inline ContactsByPair contactsByPair(iCollisionSpace* space, const std::vector<iCollisionGeometry*>& slots) {
+    std::map<iCollisionGeometry*, int> slotOf;
+    for (size_t i = 0; i < slots.size(); ++i)
+        if (slots[i]) slotOf[slots[i]] = int(i);
+    ContactsByPair out;
+    const CollisionContact* c = space->getContactList();
+    const unsigned* ids = featuresOf(space)->getContactFeatureIds();
+    for (size_t k = 0; k < space->getNumContacts(); ++k)
+        out[{slotOf.at(c[k].g1), slotOf.at(c[k].g2)}].push_back(
+            {c[k].pos.x, c[k].pos.y, c[k].pos.z, c[k].normal.x, c[k].normal.y, c[k].normal.z, c[k].depth,
+             float(ids[k] & 0xFFFFu), float(ids[k] >> 16)});
+    return out;
+}
+
+inline std::vector<int> slotsOf(const std::vector<iCollisionGeometry*>& found,
+                                const std::vector<iCollisionGeometry*>& slots) {
+    std::vector<int> out;
+    for (iCollisionGeometry* g : found)
+        out.push_back(int(std::find(slots.begin(), slots.end(), g) - slots.begin()));
+    return out;
+}
+
+inline void checkAgainstReference(const std::function<iCollisionSpace*()>& makeSpace,
+                                  const std::function<iCollisionSpace*()>& makeReference, Scene scene,
+                                  unsigned seed, int count, int calls) {
+    std::mt19937 gen(seed);
+    auto uni = [&](float a, float b) { return std::uniform_real_distribution<float>(a, b)(gen); };
+    auto pick = [&](int n) { return std::uniform_int_distribution<int>(0, n - 1)(gen); };
+    iCollisionSpace* tested = makeSpace();
+    iCollisionSpace* reference = makeReference();
+    DefaultSpace joins(reference);
+    std::vector<std::unique_ptr<UserBody>> bodies;
+    Twins twins;
+    const float extent = scene == Scene::Sparse ? 60.0f : scene == Scene::Dense ? 6.0f : 20.0f;
+    auto addGeometry = [&]() {
+        UserBody* body = nullptr;
+        if (!bodies.empty() && pick(10) == 0) {
+            body = bodies[size_t(pick(int(bodies.size())))].get();
+        } else if (pick(40) != 0) {
+            bool fixed = scene == Scene::MostlyFixed ? pick(10) < 7 : pick(10) == 0;
+            bodies.emplace_back(
+                new UserBody(Vector(uni(-extent, extent), uni(-extent, extent), uni(-extent, extent)),
+                             fixed ? PHYS_FixedInSpace : PHYS_Falling));
+            body = bodies.back().get();
+        }
+        float size = scene == Scene::Mixed && pick(4) == 0 ? uni(2.0f, 6.0f) : uni(0.2f, 1.5f);
+        int kind = pick(20);
+        Vector n(uni(-0.3f, 0.3f), 1, uni(-0.3f, 0.3f)),
+            h(size, uni(0.2f, 1.0f) * size, uni(0.2f, 1.0f) * size);
+        float offset = uni(-extent, 0);
+        bool planeBody = pick(2) != 0;
+        for (int twin = 0; twin < 2; ++twin) {
+            iCollisionGeometry* g;
+            if (kind == 0)
+                g = CreateCPlane(planeBody ? body : nullptr, n, offset);
+            else if (kind < 10)
+                g = CreateCSphere(body, size);
+            else
+                g = CreateCOBB(body, h);
+            (twin ? reference : tested)->add(g);
+            (twin ? twins.reference : twins.tested).push_back(g);
+        }
+    };
+    for (int i = 0; i < count; ++i) addGeometry();
+    // Queries: the same geometry found, in the same order (before a call: bodies moved since the last one).
+    auto compareQueries = [&](int call) {
+        iCollisionQueries *qt = queriesOf(tested), *qr = queriesOf(reference);
+        for (int k = 0; k < 4; ++k) {
+            Vector origin(uni(-extent, extent), uni(-extent, extent), uni(-extent, extent));
+            Vector dir(uni(-1, 1), uni(-1, 1), uni(-1, 1));
+            RayHit ht, hr;
+            bool hitT = qt->rayCast(origin, dir, 2.0f * extent, ht),
+                 hitR = qr->rayCast(origin, dir, 2.0f * extent, hr);
+            ASSERT_EQ(hitT, hitR) << "ray, call " << call;
+            if (hitT) {
+                EXPECT_EQ(slotsOf({ht.geometry}, twins.tested), slotsOf({hr.geometry}, twins.reference));
+                EXPECT_EQ(ht.distance, hr.distance);
+            }
+            std::vector<iCollisionGeometry*> ot, orf;
+            float r = uni(0.5f, 0.3f * extent);
+            qt->overlapSphere(origin, r, ot);
+            qr->overlapSphere(origin, r, orf);
+            EXPECT_EQ(slotsOf(ot, twins.tested), slotsOf(orf, twins.reference)) << "sphere, call " << call;
+            qt->overlapBox(origin, Matrix(1), Vector(r, 0.5f * r, r), ot);
+            qr->overlapBox(origin, Matrix(1), Vector(r, 0.5f * r, r), orf);
+            EXPECT_EQ(slotsOf(ot, twins.tested), slotsOf(orf, twins.reference)) << "box, call " << call;
+        }
+    };
+    for (int call = 0; call < calls; ++call) {
+        // What happens between two calls.
+        const int what = call == 0 ? -1 : pick(8);
+        for (auto& b : bodies) {
+            RBDynamics& d = b->getDynamics();
+            // 0: every movable body a little (within the margins); 1: some far, fast and turning.
+            if (what == 0 && d.physicsType != PHYS_FixedInSpace)
+                d.position += Vector(uni(-0.02f, 0.02f), uni(-0.02f, 0.02f), uni(-0.02f, 0.02f));
+            if (what == 1 && pick(4) == 0 && d.physicsType != PHYS_FixedInSpace) {
+                d.position += Vector(uni(-2, 2), uni(-2, 2), uni(-2, 2));
+                Eigen::Quaternionf q(uni(-1, 1), uni(-1, 1), uni(-1, 1), uni(-1, 1));
+                d.orientation = gmath::fromBlock3(q.normalized().toRotationMatrix());
+            }
+            if (what == 2 && pick(20) == 0) { // teleported: not swept
+                d.position = Vector(uni(-extent, extent), uni(-extent, extent), uni(-extent, extent));
+                d.markTeleported();
+            }
+            if (what == 3 && pick(5) == 0) d.sleeping = !d.sleeping;
+            if (what == 4 && pick(10) == 0)
+                d.physicsType = d.physicsType == PHYS_FixedInSpace ? PHYS_Falling : PHYS_FixedInSpace;
+        }
+        if (what == 5) // some geometry leaves both spaces (and is deleted)
+            for (size_t i = 0; i < twins.tested.size(); ++i)
+                if (twins.tested[i] && pick(15) == 0) {
+                    twins.tested[i]->Delete();
+                    twins.reference[i]->Delete();
+                    twins.tested[i] = twins.reference[i] = nullptr;
+                }
+        if (what == 6)
+            for (int k = 0; k < 1 + pick(count / 10 + 1); ++k) addGeometry();
+        // what == 7: nothing changes (the persistent pairs stand as they are).
+        compareQueries(call);
+        tested->populateContactList(1.0f / 60.0f);
+        reference->populateContactList(1.0f / 60.0f);
+        ASSERT_EQ(tested->getNumContacts(), reference->getNumContacts())
+            << "call " << call << " after " << what;
+        ASSERT_EQ(contactsByPair(tested, twins.tested), contactsByPair(reference, twins.reference))
+            << "call " << call << " after " << what;
+        compareQueries(call);
+    }
+    for (auto* list : {&twins.tested, &twins.reference})
+        for (iCollisionGeometry* g : *list)
+            if (g) g->Delete();
+    tested->Delete();
+    reference->Delete();
 }
 
 } // namespace spacediff

@@ -20,11 +20,12 @@ constexpr float kDt = 1.0f / 60.0f;
 
 class SceneFixture {
 public:
-    explicit SceneFixture(int iterations = 10) {
+    // space: the collision space the world uses (owned by it; default a simple space).
+    explicit SceneFixture(int iterations = 10, iCollisionSpace* space = nullptr) {
         scene = CreatePhysicsScene(nullptr);
         settingsOf(scene)->setSolverIterations(iterations);
         scene->update(0); // the first update sets the time base
-        world = new World(scene);
+        world = new World(scene, space);
     }
     ~SceneFixture() {
         delete world;

@@ -1,0 +1,33 @@
+// Broadphase.h - the candidate-pair stage of a collision space, behind one small internal interface, so
+// the same space (SimpleCollisionSpace: gathering, the fixed/sleeping skip, exact and continuous tests,
+// events, the budget) runs with sort-and-sweep (SweepAndPrune.h, the simple space) or with a persistent
+// dynamic tree (TreeBroadphase.h, the octree space).
+//
+// Contract: findPairs lists exactly the pairs of this call's entries whose boxes (Entry::box, swept over the
+// motion) overlap, plus every plane with every bounded entry, each once as (i, j) with i < j (entry
+// indices), in the order they are to be tested. Two broadphases may differ in that order, never in the set:
+// the space's contacts are the same set whichever runs. The query candidates are a superset of the
+// geometries whose shapes at their current pose meet the query: the space tests each exactly.
+#pragma once
+
+#include "SimpleCollisionSpace.h"
+
+#include <utility>
+#include <vector>
+
+class Broadphase {
+public:
+    using EntryPair = std::pair<int, int>;
+    virtual ~Broadphase() = default;
+
+    virtual void findPairs(const std::vector<SimpleCollisionSpace::Entry>& entries,
+                           std::vector<EntryPair>& out) = 0;
+    // Geometries of all (the space's members) that may meet box at their current pose, or the segment origin
+    // + t * dir (0 <= t <= maxT), in the order of all.
+    virtual void overlapCandidates(const std::vector<CollisionGeometry*>& all, const gcol::Aabb& box,
+                                   std::vector<CollisionGeometry*>& out) = 0;
+    virtual void rayCandidates(const std::vector<CollisionGeometry*>& all, const Vector& origin,
+                               const Vector& dir, float maxT, std::vector<CollisionGeometry*>& out) = 0;
+    // g is leaving the space (its space state still names its proxy).
+    virtual void forget(CollisionGeometry* g) = 0;
+};

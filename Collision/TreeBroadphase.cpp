@@ -1,0 +1,289 @@
+// TreeBroadphase.cpp - proxies, the move buffer and the persistent pair set of the octree space
+// (TreeBroadphase.h).
+#include "TreeBroadphase.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace {
+
+gcol::Aabb boundsOf(const std::vector<gcol::WorldShape>& shapes) {
+    gcol::Aabb box;
+    gcol::shapeAabb(shapes[0], box);
+    for (size_t i = 1; i < shapes.size(); ++i) {
+        gcol::Aabb b;
+        gcol::shapeAabb(shapes[i], b);
+        box = gcol::unite(box, b);
+    }
+    return box;
+}
+
+// Stretches [lo, hi] by d (its side toward d), at most by limit.
+void stretch(float& lo, float& hi, float d, float limit) {
+    d = std::fmax(-limit, std::fmin(limit, d));
+    (d > 0.0f ? hi : lo) += d;
+}
+
+} // namespace
+
+int TreeBroadphase::proxyOf(CollisionGeometry* g) {
+    CollisionGeometry::SpaceState& st = g->spaceState();
+    if (st.proxy >= 0) return st.proxy;
+    int p;
+    if (m_freeProxies.empty()) {
+        p = int(m_proxies.size());
+        m_proxies.emplace_back();
+    } else {
+        p = m_freeProxies.back();
+        m_freeProxies.pop_back();
+    }
+    Proxy& x = m_proxies[size_t(p)];
+    x = Proxy();
+    x.g = g;
+    x.order = st.order;
+    x.used = true;
+    st.proxy = p;
+    return p;
+}
+
+void TreeBroadphase::refit(int p, const gcol::Aabb& tight) {
+    Proxy& x = m_proxies[size_t(p)];
+    const Vector m(kMargin, kMargin, kMargin);
+    gcol::Aabb fat{tight.min - m, tight.max + m};
+    if (x.leaf != gcol::DynamicTree::kNull) {
+        // Motion prediction: where it went since its last fat box, it probably goes on (at most a box size).
+        const Vector d = (tight.min + tight.max - x.fat.min - x.fat.max) * 0.5f;
+        const Vector size = tight.max - tight.min + m;
+        stretch(fat.min.x, fat.max.x, d.x, size.x);
+        stretch(fat.min.y, fat.max.y, d.y, size.y);
+        stretch(fat.min.z, fat.max.z, d.z, size.z);
+    }
+    x.fat = fat;
+    x.stale = true;
+    if (!x.moved) {
+        x.moved = true;
+        m_moveBuffer.push_back(p);
+    }
+}
+
+namespace {
+
+// 10 bits of v spread to every third bit.
+unsigned spread(unsigned v) {
+    v &= 0x3FFu;
+    v = (v | (v << 16)) & 0x030000FFu;
+    v = (v | (v << 8)) & 0x0300F00Fu;
+    v = (v | (v << 4)) & 0x030C30C3u;
+    v = (v | (v << 2)) & 0x09249249u;
+    return v;
+}
+
+} // namespace
+
+unsigned TreeBroadphase::mortonKey(int p, const gcol::Aabb& bounds, float scale) const {
+    const gcol::Aabb& f = m_proxies[size_t(p)].fat;
+    const Vector c = ((f.min + f.max) * 0.5f - bounds.min) * scale;
+    return spread(unsigned(c.x)) | spread(unsigned(c.y)) << 1 | spread(unsigned(c.z)) << 2;
+}
+
+void TreeBroadphase::applyMoves() {
+    if (m_moveBuffer.empty()) return;
+    const size_t alive = m_proxies.size() - m_freeProxies.size() - m_dead.size();
+    // Most moved: new boxes in place and one rebuild over every leaf, instead of a re-insertion each.
+    const bool bulk = m_moveBuffer.size() >= kBulkMoves && 4 * m_moveBuffer.size() >= alive;
+    gcol::Aabb bounds = m_proxies[size_t(m_moveBuffer[0])].fat;
+    m_keys.clear();
+    for (size_t p = 0; p < m_proxies.size(); ++p) {
+        const Proxy& x = m_proxies[p];
+        if (x.used && !x.dead && (bulk || x.moved)) bounds = gcol::unite(bounds, x.fat);
+    }
+    const Vector size = bounds.max - bounds.min;
+    const float extent = std::fmax(size.x, std::fmax(size.y, size.z));
+    const float scale = extent > 0.0f ? 1023.0f / extent : 0.0f;
+    if (bulk) {
+        for (size_t p = 0; p < m_proxies.size(); ++p) {
+            Proxy& x = m_proxies[p];
+            if (!x.used || x.dead) continue;
+            if (x.leaf == gcol::DynamicTree::kNull)
+                x.leaf = m_tree.insert(x.fat, int(p), false);
+            else if (x.stale)
+                m_tree.setLeafBox(x.leaf, x.fat);
+            x.stale = false;
+            m_keys.emplace_back(mortonKey(int(p), bounds, scale), int(p));
+        }
+        std::sort(m_keys.begin(), m_keys.end());
+        m_leafOrder.clear();
+        m_moveBuffer.clear();
+        for (const std::pair<unsigned, int>& k : m_keys) {
+            m_leafOrder.push_back(m_proxies[size_t(k.second)].leaf);
+            if (m_proxies[size_t(k.second)].moved) m_moveBuffer.push_back(k.second);
+        }
+        m_tree.rebuild(m_leafOrder);
+        return;
+    }
+    for (int p : m_moveBuffer) m_keys.emplace_back(mortonKey(p, bounds, scale), p);
+    std::sort(m_keys.begin(), m_keys.end());
+    for (size_t i = 0; i < m_keys.size(); ++i) m_moveBuffer[i] = m_keys[i].second;
+    for (int p : m_moveBuffer) {
+        Proxy& x = m_proxies[size_t(p)];
+        if (!x.stale || x.dead) continue;
+        x.stale = false;
+        if (x.leaf == gcol::DynamicTree::kNull)
+            x.leaf = m_tree.insert(x.fat, p);
+        else
+            m_tree.move(x.leaf, x.fat);
+    }
+}
+
+void TreeBroadphase::kill(int p) {
+    Proxy& x = m_proxies[size_t(p)];
+    if (x.dead || !x.used) return;
+    if (x.leaf != gcol::DynamicTree::kNull) m_tree.remove(x.leaf);
+    x.leaf = gcol::DynamicTree::kNull;
+    x.dead = true;
+    x.g->spaceState().proxy = -1;
+    x.g = nullptr; // it may be deleted: its pairs go at the next update, the slot after that
+    m_dead.push_back(p);
+}
+
+void TreeBroadphase::forget(CollisionGeometry* g) {
+    if (g->spaceState().proxy >= 0) kill(g->spaceState().proxy);
+}
+
+void TreeBroadphase::findPairs(const std::vector<SimpleCollisionSpace::Entry>& entries,
+                               std::vector<EntryPair>& out) {
+    out.clear();
+    ++m_stamp;
+    m_planes.clear();
+    m_bounded.clear();
+    for (int i = 0; i < int(entries.size()); ++i) {
+        const SimpleCollisionSpace::Entry& e = entries[size_t(i)];
+        if (e.plane) {
+            m_planes.push_back(i);
+            continue;
+        }
+        m_bounded.push_back(i);
+        const int p = proxyOf(e.g);
+        Proxy& x = m_proxies[size_t(p)];
+        x.entry = i;
+        x.stamp = m_stamp;
+        if ((x.leaf == gcol::DynamicTree::kNull && !x.stale) || !gcol::contains(x.fat, e.box))
+            refit(p, e.box);
+        x.origin = e.origin;
+        x.rotation = e.rotation;
+        x.shapeVersion = e.g->shapeVersion();
+    }
+    // Geometry not gathered this call (no body now, a pose that is not finite, an empty compound) leaves.
+    for (size_t p = 0; p < m_proxies.size(); ++p)
+        if (m_proxies[p].used && !m_proxies[p].dead && m_proxies[p].stamp != m_stamp) kill(int(p));
+    updatePairs();
+    for (int p : m_planes)
+        for (int i : m_bounded) out.emplace_back(std::min(p, i), std::max(p, i));
+    for (const Pair& pr : m_pairs) {
+        const int a = m_proxies[size_t(pr.a)].entry, b = m_proxies[size_t(pr.b)].entry;
+        if (gcol::overlaps(entries[size_t(a)].box, entries[size_t(b)].box))
+            out.emplace_back(std::min(a, b), std::max(a, b));
+    }
+}
+
+void TreeBroadphase::updatePairs() {
+    if (m_moveBuffer.empty() && m_dead.empty()) return; // nothing moved: the pairs stand
+    applyMoves();
+    m_newPairs.clear();
+    for (int p : m_moveBuffer) {
+        const Proxy& x = m_proxies[size_t(p)];
+        if (x.dead) continue;
+        ++m_treeQueries;
+        m_tree.query(x.fat, [&](int q) {
+            const Proxy& y = m_proxies[size_t(q)];
+            if (q == p || (y.moved && q < p)) return; // itself, or found by q's own query
+            m_newPairs.push_back(pairOf(x, p, y, q));
+        });
+    }
+    std::sort(m_newPairs.begin(), m_newPairs.end());
+    // Merge: an old pair stays while both proxies live and, if either moved, their fat boxes still overlap.
+    auto keep = [this](const Pair& pr) {
+        const Proxy& a = m_proxies[size_t(pr.a)];
+        const Proxy& b = m_proxies[size_t(pr.b)];
+        return !a.dead && !b.dead && (!(a.moved || b.moved) || gcol::overlaps(a.fat, b.fat));
+    };
+    m_merged.clear();
+    size_t i = 0, j = 0;
+    while (i < m_pairs.size() || j < m_newPairs.size()) {
+        if (j == m_newPairs.size() || (i < m_pairs.size() && m_pairs[i] < m_newPairs[j])) {
+            if (keep(m_pairs[i])) m_merged.push_back(m_pairs[i]);
+            ++i;
+        } else {
+            if (i < m_pairs.size() && !(m_newPairs[j] < m_pairs[i])) ++i; // the same pair, found again
+            m_merged.push_back(m_newPairs[j]);
+            ++j;
+        }
+    }
+    m_pairs.swap(m_merged);
+    for (int p : m_moveBuffer) m_proxies[size_t(p)].moved = false;
+    m_moveBuffer.clear();
+    for (int p : m_dead) {
+        m_proxies[size_t(p)] = Proxy();
+        m_freeProxies.push_back(p);
+    }
+    m_dead.clear();
+}
+
+void TreeBroadphase::syncForQuery(const std::vector<CollisionGeometry*>& all) {
+    m_queryPlanes.clear();
+    for (CollisionGeometry* g : all) {
+        if (g->isPlane()) {
+            m_queryPlanes.push_back(g);
+            continue;
+        }
+        const CollisionGeometry::SpaceState& st = g->spaceState();
+        if (!g->body() || st.pendingDelete || st.pendingRemove) continue; // never a query result
+        Vector o;
+        Matrix r(1);
+        if (!g->currentPose(o, r)) continue;
+        if (st.proxy >= 0) {
+            const Proxy& x = m_proxies[size_t(st.proxy)];
+            if (x.leaf != gcol::DynamicTree::kNull && x.origin == o && x.rotation == r &&
+                x.shapeVersion == g->shapeVersion())
+                continue; // where its fat box was made (or checked): still inside
+        }
+        m_shapes.clear();
+        g->worldShapes(o, r, m_shapes);
+        if (m_shapes.empty()) continue;
+        const gcol::Aabb box = boundsOf(m_shapes);
+        const int p = proxyOf(g);
+        Proxy& x = m_proxies[size_t(p)];
+        if ((x.leaf == gcol::DynamicTree::kNull && !x.stale) || !gcol::contains(x.fat, box)) refit(p, box);
+        x.origin = o;
+        x.rotation = r;
+        x.shapeVersion = g->shapeVersion();
+    }
+    applyMoves();
+}
+
+void TreeBroadphase::gatherCandidates(std::vector<CollisionGeometry*>& out) {
+    out.clear();
+    for (int p : m_hits) out.push_back(m_proxies[size_t(p)].g);
+    out.insert(out.end(), m_queryPlanes.begin(), m_queryPlanes.end());
+    std::sort(out.begin(), out.end(), [](CollisionGeometry* a, CollisionGeometry* b) {
+        return a->spaceState().order < b->spaceState().order;
+    });
+}
+
+void TreeBroadphase::overlapCandidates(const std::vector<CollisionGeometry*>& all, const gcol::Aabb& box,
+                                       std::vector<CollisionGeometry*>& out) {
+    syncForQuery(all);
+    m_hits.clear();
+    ++m_treeQueries;
+    m_tree.query(box, [this](int p) { m_hits.push_back(p); });
+    gatherCandidates(out);
+}
+
+void TreeBroadphase::rayCandidates(const std::vector<CollisionGeometry*>& all, const Vector& origin,
+                                   const Vector& dir, float maxT, std::vector<CollisionGeometry*>& out) {
+    syncForQuery(all);
+    m_hits.clear();
+    ++m_treeQueries;
+    m_tree.rayCast(origin, dir, maxT, [this](int p) { m_hits.push_back(p); });
+    gatherCandidates(out);
+}

@@ -1,0 +1,90 @@
+// TreeBroadphase.h - the octree space's broadphase (iOctreeCollisionSpace.h): a dynamic AABB tree of fat
+// boxes whose pairs persist between calls, in the manner of Box2D's broadphase (move buffer, pair set).
+//
+// Each bounded geometry has a proxy: a leaf of the tree with a fat box, its tight box grown by kMargin on
+// every side and stretched along its last displacement (motion prediction). A call compares each entry's
+// box with its fat box; only a geometry that left it gets a new fat box and goes into the move buffer, and
+// only moved proxies query the tree. The moved leaves are re-inserted and query in Morton order of their
+// centres (neighbours one after the other: the nodes they pass stay in cache, and the tree they make is
+// tighter), which does not change any result. When most proxies moved (kBulkMoves), the tree is rebuilt
+// in that order over all leaves instead of re-inserting each. The pair set (a vector sorted by the
+// geometries' join order, so it never depends on heap addresses) keeps every pair whose fat boxes overlap: a
+// new pair joins when a moved proxy finds it, a pair leaves when one of its proxies moved and the fat boxes
+// no longer overlap, or when a geometry leaves the space. A call where nothing moved makes no tree query and
+// no merge: it lists the pairs whose exact boxes overlap, O(pairs). Pairs are listed planes first, then by
+// join order. Queries first bring the proxies up to date with the bodies' current poses (a pose compare per
+// geometry; shapes rebuilt only for one that moved), then ask the tree.
+#pragma once
+
+#include "Broadphase.h"
+#include "DynamicTree.h"
+
+#include <cstdint>
+
+class TreeBroadphase final : public Broadphase {
+public:
+    static constexpr float kMargin = 0.1f;   // m, fat box margin on every side
+    static constexpr size_t kBulkMoves = 64; // this many moved, and a quarter of all: one rebuild
+
+    void findPairs(const std::vector<SimpleCollisionSpace::Entry>& entries,
+                   std::vector<EntryPair>& out) override;
+    void overlapCandidates(const std::vector<CollisionGeometry*>& all, const gcol::Aabb& box,
+                           std::vector<CollisionGeometry*>& out) override;
+    void rayCandidates(const std::vector<CollisionGeometry*>& all, const Vector& origin, const Vector& dir,
+                       float maxT, std::vector<CollisionGeometry*>& out) override;
+    void forget(CollisionGeometry* g) override;
+
+    // For tests and benchmarks: tree queries made so far, the tree, the pairs kept.
+    size_t treeQueries() const { return m_treeQueries; }
+    const gcol::DynamicTree& tree() const { return m_tree; }
+    size_t pairCount() const { return m_pairs.size(); }
+
+private:
+    struct Proxy {
+        gcol::Aabb fat;
+        Vector origin; // the pose and shape version at which fat was known to hold the tight box
+        Matrix rotation = Matrix(1);
+        unsigned shapeVersion = 0;
+        unsigned long long order = 0; // the geometry's join order (SpaceState::order)
+        CollisionGeometry* g = nullptr;
+        int leaf = gcol::DynamicTree::kNull;
+        int entry = -1;     // its entry in the current call
+        unsigned stamp = 0; // the call that last saw it
+        bool moved = false, dead = false, used = false;
+        bool stale = false; // fat changed; the tree's leaf not yet
+    };
+    struct Pair {
+        // The join orders, lower in the high half: sorted by key, pairs follow the space's order. (Join
+        // orders are counted modulo 2^32 here: the order only goes wrong after 4 billion geometries joined.)
+        uint64_t key;
+        int a, b; // their proxies, a the earlier joined
+        bool operator<(const Pair& o) const { return key < o.key; }
+    };
+    static Pair pairOf(const Proxy& x, int p, const Proxy& y, int q) {
+        const uint64_t ox = uint32_t(x.order), oy = uint32_t(y.order);
+        return ox < oy ? Pair{ox << 32 | oy, p, q} : Pair{oy << 32 | ox, q, p};
+    }
+    int proxyOf(CollisionGeometry* g);
+    // Gives proxy p the box tight (not inside its fat box): a new fat box, into the move buffer.
+    void refit(int p, const gcol::Aabb& tight);
+    // Puts the move buffer in Morton order and brings the tree's leaves up to date with the fat boxes.
+    void applyMoves();
+    unsigned mortonKey(int p, const gcol::Aabb& bounds, float scale) const;
+    void kill(int p);
+    void updatePairs();
+    void syncForQuery(const std::vector<CollisionGeometry*>& all);
+    void gatherCandidates(std::vector<CollisionGeometry*>& out);
+
+    gcol::DynamicTree m_tree;
+    std::vector<Proxy> m_proxies;
+    std::vector<int> m_freeProxies, m_dead;
+    std::vector<int> m_moveBuffer;
+    std::vector<std::pair<unsigned, int>> m_keys; // Morton key, proxy
+    std::vector<int> m_leafOrder;
+    std::vector<Pair> m_pairs, m_newPairs, m_merged;
+    std::vector<int> m_planes, m_bounded, m_hits;
+    std::vector<gcol::WorldShape> m_shapes;
+    std::vector<CollisionGeometry*> m_queryPlanes;
+    unsigned m_stamp = 0;
+    size_t m_treeQueries = 0;
+};
