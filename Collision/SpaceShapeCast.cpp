@@ -122,6 +122,7 @@ size_t SimpleCollisionSpace::sweepBodies(BodySweep* sweeps, size_t count) {
             sweeps[i].body ? sweeps[i].body->getDynamics().position - sweeps[i].startPosition : Vector();
     size_t hits = 0;
     m_sweepHits.assign(count, SweepHit());
+    m_obstaclesIndexed = false; // built by the first fast sweep (most calls have none)
     for (size_t i = 0; i < count; ++i) {
         if (!sweeps[i].body) continue;
         sweepOne(sweeps[i], int(i));
@@ -160,6 +161,47 @@ bool SimpleCollisionSpace::touchedAtStart(std::pair<int, int> range,
             return true;
     }
     return false;
+}
+
+void SimpleCollisionSpace::indexObstacles() {
+    m_obstaclesIndexed = true;
+    m_byLowX.clear();
+    m_unbounded.clear();
+    m_maxSpan = 0.0f;
+    for (size_t j = 0; j < m_cast.size(); ++j) {
+        CastGeometry& c = m_cast[j];
+        if (!c.posed) {
+            c.posed = true;
+            if (!c.g->currentPose(c.origin, c.rotation)) c.sweep = kUnusable;
+        }
+        if (c.sweep == kUnusable) continue;
+        // Another swept body's geometry moves from its start (current pose - shift) to its current pose; so
+        // does any other that moved since the contacts were found (a kinematic paddle, a slower body): held
+        // at its end pose, a paddle chasing a ball it just sent off stood in the ball's path.
+        const CollisionGeometry::SpaceState& st = c.g->spaceState();
+        c.shift = c.sweep >= 0                                       ? m_sweepShift[size_t(c.sweep)]
+                  : st.hasPrevious && st.previousBody == c.g->body() ? c.origin - st.previousOrigin
+                                                                     : Vector();
+        // The sphere around it over its motion (sweepOne tests the same one against a body's swept bounds).
+        const float r = c.g->asInterface()->getBoundingRadius() + 0.5f * c.shift.length();
+        const float lowX = c.origin.x - 0.5f * c.shift.x - r;
+        if (c.g->isPlane() || !std::isfinite(lowX) || !std::isfinite(r)) {
+            m_unbounded.push_back(int(j));
+            continue;
+        }
+        m_byLowX.emplace_back(lowX, int(j));
+        m_maxSpan = std::max(m_maxSpan, 2.0f * r);
+    }
+    std::sort(m_byLowX.begin(), m_byLowX.end());
+}
+
+// Every geometry whose sphere can reach [lo, hi] along x, and the unbounded ones, in m_cast order (the order
+// a pass over all would meet them: ties in the time of impact resolve the same way).
+void SimpleCollisionSpace::gatherCandidates(const Vector& lo, const Vector& hi) {
+    m_castCandidates.assign(m_unbounded.begin(), m_unbounded.end());
+    auto it = std::lower_bound(m_byLowX.begin(), m_byLowX.end(), std::make_pair(lo.x - m_maxSpan, -1));
+    for (; it != m_byLowX.end() && it->first <= hi.x; ++it) m_castCandidates.push_back(it->second);
+    std::sort(m_castCandidates.begin(), m_castCandidates.end());
 }
 
 void SimpleCollisionSpace::sweepOne(BodySweep& sweep, int index) {
@@ -201,24 +243,16 @@ void SimpleCollisionSpace::sweepOne(BodySweep& sweep, int index) {
     m_obstacles.clear();
     m_obstacleOwner.clear();
     m_obstacleShift.clear();
-    for (size_t j = 0; j < m_cast.size(); ++j) {
+    if (!m_obstaclesIndexed) indexObstacles();
+    gatherCandidates(vec(lo), vec(hi));
+    for (int candidate : m_castCandidates) {
+        const size_t j = size_t(candidate);
         CastGeometry& c = m_cast[j];
         // A pair found touching when the contacts were found is the contact solve's: the straight-line path
         // (COM linear, orientation slerp) of a body turning about a touch cuts into the surface, and a domino
         // leaning on the next one was put back every step.
-        if (c.sweep == index || touchedAtStart(range, c.g)) continue;
-        if (!c.posed) { // read once, for the first fast body that needs it
-            c.posed = true;
-            if (!c.g->currentPose(c.origin, c.rotation)) c.sweep = kUnusable;
-        }
-        if (c.sweep == kUnusable) continue;
-        // Another swept body's geometry moves from its start (current pose - shift) to its current pose; so
-        // does any other that moved since the contacts were found (a kinematic paddle, a slower body): held
-        // at its end pose, a paddle chasing a ball it just sent off stood in the ball's path.
-        const CollisionGeometry::SpaceState& st = c.g->spaceState();
-        const Vector shift = c.sweep >= 0 ? m_sweepShift[size_t(c.sweep)]
-                             : st.hasPrevious && st.previousBody == c.g->body() ? c.origin - st.previousOrigin
-                                                                                : Vector();
+        if (c.sweep == index || c.sweep == kUnusable || touchedAtStart(range, c.g)) continue;
+        const Vector& shift = c.shift;
         const Vec3 half = 0.5f * eigen(shift);
         if (!c.g->isPlane()) { // its bounding sphere against the swept bounds first: most are far
             const Vec3 o = eigen(c.origin) - half, nearest = o.cwiseMax(lo).cwiseMin(hi);
