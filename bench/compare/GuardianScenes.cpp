@@ -9,6 +9,7 @@
 #include "World.h"
 #include "iCollisionSpace.h"
 #include "iContactSettings.h"
+#include "iOctreeCollisionSpace.h"
 #include "iPhysicsFrame.h"
 #include "iPhysicsScene.h"
 #include "iPhysicsSceneSettings.h"
@@ -41,7 +42,8 @@ Pose poseOf(const RBDynamics& d) {
 // A physics scene with a World (simple collision space) holding the scene's bodies.
 class GuardianWorld {
 public:
-    GuardianWorld(const SceneDesc& s, const SimOptions& o) : m_scene(CreatePhysicsScene(nullptr)) {
+    GuardianWorld(const SceneDesc& s, const SimOptions& o, bool octree = false)
+        : m_scene(CreatePhysicsScene(nullptr)) {
         iPhysicsSceneSettings* settings = settingsOf(m_scene);
         settings->setSleepingEnabled(o.sleeping);
         settings->setContinuousCollisionEnabled(o.continuous);
@@ -50,7 +52,7 @@ public:
         // the smaller value. Friction: the default 0.25 a body, summed (the seed's rule), is 0.5.
         settings->setRestitutionRule(COMBINE_Min);
         m_scene->update(0);
-        m_world = new World(m_scene);
+        m_world = new World(m_scene, octree ? CreateOctreeCollisionSpace() : nullptr);
         if (s.ground) m_world->ground();
         for (const BodyDesc& b : s.bodies) {
             const float h = float(b.size);
@@ -100,7 +102,7 @@ private:
 
 class GuardianPairs : public PairFinder, private GuardianWorld {
 public:
-    explicit GuardianPairs(const SceneDesc& s) : GuardianWorld(s, SimOptions{}) {}
+    GuardianPairs(const SceneDesc& s, bool octree) : GuardianWorld(s, SimOptions{}, octree) {}
     void place(const std::vector<Pose>& poses) override {
         for (size_t i = 0; i < poses.size() && i < m_bodies.size(); ++i) {
             m_bodies[i]->position = vectorOf(poses[i].p);
@@ -131,7 +133,11 @@ std::unique_ptr<Sim> makeGuardianSim(const SceneDesc& scene, const SimOptions& o
 }
 
 std::unique_ptr<PairFinder> makeGuardianPairs(const SceneDesc& scene) {
-    return std::make_unique<GuardianPairs>(scene);
+    return std::make_unique<GuardianPairs>(scene, false);
+}
+
+std::unique_ptr<PairFinder> makeGuardianOctreePairs(const SceneDesc& scene) {
+    return std::make_unique<GuardianPairs>(scene, true);
 }
 
 } // namespace compare

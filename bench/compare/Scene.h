@@ -82,6 +82,8 @@ struct EngineInfo {
 EngineInfo guardianInfo();
 std::unique_ptr<Sim> makeGuardianSim(const SceneDesc& scene, const SimOptions& options);
 std::unique_ptr<PairFinder> makeGuardianPairs(const SceneDesc& scene);
+// The same with the octree space (CreateOctreeCollisionSpace) instead of the simple one.
+std::unique_ptr<PairFinder> makeGuardianOctreePairs(const SceneDesc& scene);
 EngineInfo bulletInfo();
 std::unique_ptr<Sim> makeBulletSim(const SceneDesc& scene, const SimOptions& options);
 std::unique_ptr<PairFinder> makeBulletPairs(const SceneDesc& scene);

@@ -125,17 +125,20 @@ void broadphaseRow(const std::vector<Engine>& engines, int boxes, int rounds) {
     std::printf(
         "\n== broadphase only: %d randomly turned unit boxes on a 1.5 m grid, %d calls each (median)\n",
         boxes, rounds);
+    // The three engines, then Guardian with its octree space (interleaved with them, same rounds).
     std::vector<std::unique_ptr<PairFinder>> finders;
     std::vector<size_t> first;
     for (const Engine& e : engines) {
         finders.push_back(e.pairs(scene));
         first.push_back(finders.back()->findPairs()); // the first call finds every pair: not timed
     }
-    std::vector<double> moved[3], still[3];
-    size_t movedPairs[3] = {0, 0, 0}, stillPairs[3] = {0, 0, 0};
+    finders.push_back(makeGuardianOctreePairs(scene));
+    first.push_back(finders.back()->findPairs());
+    std::vector<double> moved[4], still[4];
+    size_t movedPairs[4] = {0, 0, 0, 0}, stillPairs[4] = {0, 0, 0, 0};
     for (int round = 0; round < rounds; ++round) {
         std::vector<Pose> poses = jiggled(scene, unsigned(round));
-        for (size_t e = 0; e < engines.size(); ++e) {
+        for (size_t e = 0; e < finders.size(); ++e) {
             finders[e]->place(poses);
             Clock::time_point t0 = Clock::now();
             movedPairs[e] = finders[e]->findPairs();
@@ -143,24 +146,28 @@ void broadphaseRow(const std::vector<Engine>& engines, int boxes, int rounds) {
         }
     }
     for (int round = 0; round < rounds; ++round)
-        for (size_t e = 0; e < engines.size(); ++e) {
+        for (size_t e = 0; e < finders.size(); ++e) {
             Clock::time_point t0 = Clock::now();
             stillPairs[e] = finders[e]->findPairs();
             still[e].push_back(1000 * seconds(t0));
         }
     std::printf("  %-9s %12s %12s %14s  %s\n", "engine", "moved ms", "still ms", "found (moved)",
                 "what is timed");
-    double m[3], s[3];
-    for (size_t e = 0; e < engines.size(); ++e) {
+    double m[4], s[4];
+    for (size_t e = 0; e < finders.size(); ++e) {
         m[e] = median(moved[e]);
         s[e] = median(still[e]);
+        const bool octree = e == engines.size();
         std::printf("  %-9s %12.3f %12.3f %14zu  %s (first call %zu, still %zu)\n",
-                    engines[e].info.name.c_str(), m[e], s[e], movedPairs[e],
-                    engines[e].info.pairsNote.c_str(), first[e], stillPairs[e]);
+                    octree ? "G octree" : engines[e].info.name.c_str(), m[e], s[e], movedPairs[e],
+                    octree ? "the same with CreateOctreeCollisionSpace (pairs kept between calls)"
+                           : engines[e].info.pairsNote.c_str(),
+                    first[e], stillPairs[e]);
     }
     std::printf("  time ratio moved: Guardian/Bullet %.2f, Guardian/ODE %.2f; still: Guardian/Bullet %.2f, "
                 "Guardian/ODE %.2f\n",
                 m[0] / m[1], m[0] / m[2], s[0] / s[1], s[0] / s[2]);
+    std::printf("  octree space: moved Guardian/Bullet %.2f, still %.2f\n", m[3] / m[1], s[3] / s[1]);
     std::fflush(stdout);
 }
 
