@@ -177,6 +177,7 @@ private:
     std::vector<Notice> m_notices;  // this call's touching pairs, then the resting ones carried over
     std::vector<Notice> m_touching; // the pairs touching at the last call
     std::vector<Notice> m_held;     // pairs that touched since the last delivery (events held)
+    int m_heldCalls = 0;            // populate calls held since the last delivery
     std::vector<Notice> m_delivery; // scratch
     struct BodyPair {
         std::uintptr_t lo, hi; // the two bodies' addresses, lower first

@@ -54,9 +54,11 @@ void SimpleCollisionSpace::carryRestingPairs() {
 void SimpleCollisionSpace::reportTouching() {
     m_touching = m_notices;
     if (!m_holdEvents) {
+        if (m_heldCalls > 0) m_heldCalls = 2; // what is held is no longer what touches now: deliver both
         notifyListeners(m_notices);
         return;
     }
+    ++m_heldCalls;
     m_held.insert(m_held.end(), m_notices.begin(), m_notices.end());
     // A game that holds events and never delivers them keeps only one notice per pair.
     if (m_held.size() > 8 * (m_touching.size() + 64)) dropRepeats(m_held);
@@ -68,9 +70,12 @@ void SimpleCollisionSpace::deliverEvents() {
         return;
     }
     // The latest contact of a pair still touching first: notifyListeners keeps the first of each body pair.
+    // One call held (a frame of one step, the usual case): what it held is what still touches, m_touching
+    // itself, so it is not listed twice (the body-pair sort in notifyListeners halves).
     m_delivery = m_touching;
-    m_delivery.insert(m_delivery.end(), m_held.begin(), m_held.end());
+    if (m_heldCalls > 1) m_delivery.insert(m_delivery.end(), m_held.begin(), m_held.end());
     m_held.clear();
+    m_heldCalls = 0;
     notifyListeners(m_delivery);
 }
 
