@@ -58,6 +58,7 @@ void SimpleCollisionSpace::emit(const Entry& a, const Entry& b, const gcol::Cont
         c.g1 = a.g->asInterface();
         c.g2 = b.g->asInterface();
         m_contacts.push_back(c);
+        m_contactGeoms.emplace_back(a.g, b.g);
         m_features.push_back((p.feature & 0xFFFu) | ((childPair & 0x3FFFFu) << 12) | tag);
     }
 }

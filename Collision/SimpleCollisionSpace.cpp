@@ -76,10 +76,12 @@ void SimpleCollisionSpace::removeNow(CollisionGeometry* g) {
         if (c.g1 == g->asInterface() || c.g2 == g->asInterface()) continue;
         m_contacts[keep] = c;
         m_features[keep] = m_features[i];
+        m_contactGeoms[keep] = m_contactGeoms[i];
         ++keep;
     }
     m_contacts.resize(keep);
     m_features.resize(keep);
+    m_contactGeoms.resize(keep);
     g->setSpace(nullptr);
     g->spaceState() = CollisionGeometry::SpaceState();
 }
@@ -209,6 +211,7 @@ void SimpleCollisionSpace::populateContactList(float delta) {
     m_droppedPairs = 0;
     m_contacts.clear();
     m_features.clear();
+    m_contactGeoms.clear();
     m_entries.clear();
     m_shapes.clear();
     m_notices.clear();

@@ -168,6 +168,8 @@ private:
     std::vector<CollisionGeometry*> m_members; // the same geometry in the same order, without a cast each
     std::vector<CollisionContact> m_contacts;
     std::vector<unsigned> m_features;
+    // Each contact's two geometries as this space's own records (so that no contact is cross-cast back).
+    std::vector<std::pair<CollisionGeometry*, CollisionGeometry*>> m_contactGeoms;
     // Scratch reused between calls.
     std::vector<Entry> m_entries;
     std::vector<gcol::WorldShape> m_shapes, m_scratchA, m_scratchB;

@@ -73,15 +73,14 @@ void SimpleCollisionSpace::finishNotifications() {
         // contacts name only geometry still here; this call's entries may be stale when events are delivered
         // later.)
         bool changed = false;
-        for (const CollisionContact& c : m_contacts)
-            changed = changed || !CollisionGeometry::from(c.g1)->spaceState().hasPrevious ||
-                      !CollisionGeometry::from(c.g2)->spaceState().hasPrevious;
+        for (const auto& [g1, g2] : m_contactGeoms)
+            changed = changed || !g1->spaceState().hasPrevious || !g2->spaceState().hasPrevious;
         if (!changed) return;
     }
     size_t keep = 0;
     for (size_t i = 0; i < m_contacts.size(); ++i) {
-        CollisionGeometry* g1 = CollisionGeometry::from(m_contacts[i].g1);
-        CollisionGeometry* g2 = CollisionGeometry::from(m_contacts[i].g2);
+        CollisionGeometry* g1 = m_contactGeoms[i].first;
+        CollisionGeometry* g2 = m_contactGeoms[i].second;
         auto alive = [](CollisionGeometry* g) {
             const CollisionGeometry::SpaceState& st = g->spaceState();
             return st.hasPrevious && !st.pendingDelete && !st.pendingRemove;
@@ -89,10 +88,12 @@ void SimpleCollisionSpace::finishNotifications() {
         if (!alive(g1) || !alive(g2)) continue;
         m_contacts[keep] = m_contacts[i];
         m_features[keep] = m_features[i];
+        m_contactGeoms[keep] = m_contactGeoms[i];
         ++keep;
     }
     m_contacts.resize(keep);
     m_features.resize(keep);
+    m_contactGeoms.resize(keep);
     for (CollisionGeometry* g : m_pendingRemove)
         if (!g->spaceState().pendingDelete) removeNow(g);
     m_pendingRemove.clear();
