@@ -91,16 +91,18 @@ private:
     int m_free = kNull;
     int m_leaves = 0;
     mutable std::vector<int> m_stack;
+    // Depth first from the root into every node whose box enter(box) accepts; visit(value) at its leaves.
+    template <class Enter, class Visit> void walk(Enter&& enter, Visit&& visit) const;
 };
 
-template <class Visit> void DynamicTree::query(const Aabb& box, Visit&& visit) const {
+template <class Enter, class Visit> void DynamicTree::walk(Enter&& enter, Visit&& visit) const {
     if (m_root == kNull) return;
     m_stack.clear();
     m_stack.push_back(m_root);
     while (!m_stack.empty()) {
         const Node& n = m_nodes[size_t(m_stack.back())];
         m_stack.pop_back();
-        if (!overlaps(n.box, box)) continue;
+        if (!enter(n.box)) continue;
         if (n.leaf()) {
             visit(n.value);
         } else {
@@ -110,22 +112,13 @@ template <class Visit> void DynamicTree::query(const Aabb& box, Visit&& visit) c
     }
 }
 
+template <class Visit> void DynamicTree::query(const Aabb& box, Visit&& visit) const {
+    walk([&box](const Aabb& node) { return overlaps(node, box); }, visit);
+}
+
 template <class Visit>
 void DynamicTree::rayCast(const Vector& origin, const Vector& dir, float maxT, Visit&& visit) const {
-    if (m_root == kNull) return;
-    m_stack.clear();
-    m_stack.push_back(m_root);
-    while (!m_stack.empty()) {
-        const Node& n = m_nodes[size_t(m_stack.back())];
-        m_stack.pop_back();
-        if (!rayHitsBox(n.box, origin, dir, maxT)) continue;
-        if (n.leaf()) {
-            visit(n.value);
-        } else {
-            m_stack.push_back(n.child1);
-            m_stack.push_back(n.child2);
-        }
-    }
+    walk([&](const Aabb& node) { return rayHitsBox(node, origin, dir, maxT); }, visit);
 }
 
 } // namespace gcol

@@ -173,7 +173,6 @@ private:
     // Scratch reused between calls.
     std::vector<Entry> m_entries;
     std::vector<gcol::WorldShape> m_shapes, m_scratchA, m_scratchB;
-    std::vector<int> m_order;                 // notices by body pair (SpaceListeners.cpp)
     std::vector<std::pair<int, int>> m_pairs; // this call's candidate pairs (entry indices), in test order
     std::vector<CollisionGeometry*> m_candidates; // a query's
     std::vector<Notice> m_notices;  // this call's touching pairs, then the resting ones carried over

@@ -1,7 +1,8 @@
 // AllocationTest.cpp - after warm-up, populateContactList does not allocate, in the simple space and in the
 // octree space (whose tree nodes, proxies and pair set are reused): the contact list, the working arrays and
-// the listener snapshot keep their storage between calls. Counted by replacing the global
-// operator new in this test program.
+// the listener snapshot keep their storage between calls. Counted by the test program's
+// counting operator new (tests/CountingNew.h).
+#include "CountingNew.h"
 #include "DefaultSpace.h"
 #include "UserBody.h"
 #include "iCOBB.h"
@@ -13,34 +14,8 @@
 
 #include <gtest/gtest.h>
 
-#include <atomic>
-#include <cstdlib>
 #include <memory>
-#include <new>
 #include <vector>
-
-namespace {
-std::atomic<long> g_allocations{0};
-}
-
-// The replacement pairs malloc with free on purpose; GCC cannot see that and warns.
-#if defined(__GNUC__) && !defined(__clang__)
-#pragma GCC diagnostic ignored "-Wmismatched-new-delete"
-#endif
-void* operator new(std::size_t n) {
-    ++g_allocations;
-    if (void* p = std::malloc(n ? n : 1)) return p;
-    throw std::bad_alloc();
-}
-void* operator new[](std::size_t n) {
-    ++g_allocations;
-    if (void* p = std::malloc(n ? n : 1)) return p;
-    throw std::bad_alloc();
-}
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete[](void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
-void operator delete[](void* p, std::size_t) noexcept { std::free(p); }
 
 namespace {
 struct Counter final : iCollisionListener {
@@ -73,10 +48,10 @@ void populateDoesNotAllocateAfterWarmUp(iCollisionSpace* space) {
     };
     for (int k = 0; k < 4; ++k) step(k);
     ASSERT_GT(space->getNumContacts(), 0u);
-    long before = g_allocations.load();
+    long before = guardian_test::allocationCount();
     ASSERT_GT(before, 0) << "the counting operator new is in use";
     for (int k = 4; k < 14; ++k) step(k);
-    long during = g_allocations.load() - before;
+    long during = guardian_test::allocationCount() - before;
     EXPECT_EQ(during, 0);
     EXPECT_GT(counter.hits, 0);
     for (iCollisionGeometry* g : geoms) g->Delete();

@@ -1,6 +1,7 @@
 // StepAllocationTest.cpp - once a scene is warm, a step does not touch the heap: every working array (space,
-// islands, solver, continuous stage, events) keeps its storage between steps. Counted by replacing the
-// global operator new in this test program (it only counts: every other test here runs as usual).
+// islands, solver, continuous stage, events) keeps its storage between steps. Counted by the counting
+// operator new this test program links (tests/CountingNew.h; it only counts: other tests run as usual).
+#include "CountingNew.h"
 #include "SceneFixture.h"
 
 #include "Scenes.h"
@@ -8,43 +9,16 @@
 
 #include <gtest/gtest.h>
 
-#include <atomic>
-#include <cstdlib>
-#include <new>
-
 using namespace resolution_test;
-
-namespace {
-std::atomic<long> g_allocations{0};
-}
-
-// The replacement pairs malloc with free on purpose; GCC cannot see that and warns.
-#if defined(__GNUC__) && !defined(__clang__)
-#pragma GCC diagnostic ignored "-Wmismatched-new-delete"
-#endif
-void* operator new(std::size_t n) {
-    ++g_allocations;
-    if (void* p = std::malloc(n ? n : 1)) return p;
-    throw std::bad_alloc();
-}
-void* operator new[](std::size_t n) {
-    ++g_allocations;
-    if (void* p = std::malloc(n ? n : 1)) return p;
-    throw std::bad_alloc();
-}
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete[](void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
-void operator delete[](void* p, std::size_t) noexcept { std::free(p); }
 
 namespace {
 
 // Allocations made by `steps` further steps of a scene that has already run `warm` steps.
 long allocationsOfWarmSteps(SceneFixture& f, int warm, int steps) {
     f.steps(warm);
-    const long before = g_allocations.load();
+    const long before = guardian_test::allocationCount();
     f.steps(steps);
-    return g_allocations.load() - before;
+    return guardian_test::allocationCount() - before;
 }
 
 } // namespace
