@@ -17,6 +17,13 @@ struct Placed {
 };
 } // namespace
 
+bool isKinematicChain(const RBDynamics& root) {
+    if (!(root.mass < INFINITE_MASS)) return true;
+    for (const RBDynamics* c = root.firstAttached(); c; c = c->nextAttached())
+        if (isKinematicChain(*c)) return true;
+    return false;
+}
+
 void buildComposite(RigidBody* rootBody, const std::unordered_map<const RBDynamics*, RigidBody*>& bodies,
                     const Vec3& gravity, Composite& out) {
     RBDynamics* root = &rootBody->getDynamics();

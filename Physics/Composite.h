@@ -48,6 +48,10 @@ struct MotionState {
 void buildComposite(RigidBody* rootBody, const std::unordered_map<const RBDynamics*, RigidBody*>& bodies,
                     const Vec3& gravity, Composite& out);
 
+// Whether some part of the chain rooted at root has INFINITE_MASS (forces cannot move it), without building
+// it.
+bool isKinematicChain(const RBDynamics& root);
+
 // World inverse inertia R I^-1 R^T and angular velocity of a state.
 inline Mat3 worldInverseInertia(const Composite& c, const Quat& q) {
     Mat3 r = q.toRotationMatrix();

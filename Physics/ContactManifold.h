@@ -22,7 +22,7 @@ struct SolverBody {
     Vec3 startOrigin = Vec3::Zero();
     Quat startRotation = Quat::Identity();
     // The root's frame now. A movable body starts the solve at its start frame and moves with each sub-step;
-    // an immovable one stays where the step put it.
+    // an immovable one stays where the step put it (a kinematic body moved by its velocity).
     Vec3 origin = Vec3::Zero();
     Quat rotation = Quat::Identity();
     Vec3 com = Vec3::Zero(); // world centre of mass, at the step's start on loading
@@ -44,7 +44,8 @@ struct ContactPoint {
     Vec3 normal = Vec3::UnitY();                         // from body a toward body b
     Vec3 tangent[2] = {Vec3::UnitX(), Vec3::UnitZ()};    // a fixed basis derived from the normal
     Vec3 anchorA = Vec3::Zero(), anchorB = Vec3::Zero(); // the touching surface points, in each root's frame
-    Vec3 rA = Vec3::Zero(), rB = Vec3::Zero();           // from each centre of mass to the contact (world)
+    Vec3 point = Vec3::Zero(); // the contact point (world) at the step's start, midway between the two
+    Vec3 rA = Vec3::Zero(), rB = Vec3::Zero(); // from each centre of mass to the contact (world), once known
     float depth = 0; // overlap as the detector reported it (the four deepest are kept)
     // The constraint rows, for the normal (0) and the two tangents (1, 2): r x direction on each body, and
     // I^-1 (r x direction), how an impulse along the direction turns each body.

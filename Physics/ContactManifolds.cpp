@@ -25,16 +25,14 @@ Vec3 localAnchor(const SolverBody& b, const Vec3& world) {
 
 int ContactSolver::bodyIndex(RBDynamics* root, const SolverBodyAccess& access) {
     if (const int* known = m_bodyIndex.find(root)) return *known;
-    m_bodies.push_back(access.load(root));
-    int index = int(m_bodies.size()) - 1;
+    int index = int(m_bodies.size());
+    m_bodies.push_back(access.enter(root, index));
     m_bodyIndex.emplace(root, index);
     return index;
 }
 
 void ContactSolver::buildManifolds(const CollisionContact* contacts, size_t count,
                                    const SolverBodyAccess& access) {
-    m_bodies.clear();
-    m_bodyIndex.clear();
     m_manifolds.clear();
     FlatMap<PairKey, size_t, PairKeyHash>& current = m_current;
     current.clear();
@@ -82,8 +80,7 @@ void ContactSolver::buildManifolds(const CollisionContact* contacts, size_t coun
         Vec3 onA = pos + 0.5f * p.depth * n, onB = pos - 0.5f * p.depth * n;
         p.anchorA = localAnchor(m_bodies[m.a], onA);
         p.anchorB = localAnchor(m_bodies[m.b], onB);
-        p.rA = pos - m_bodies[m.a].com;
-        p.rB = pos - m_bodies[m.b].com;
+        p.point = pos;
         m_maxDepthBefore = std::max(m_maxDepthBefore, p.depth);
         if (m.count < 4) {
             m.points[m.count++] = p;
@@ -125,9 +122,7 @@ void ContactSolver::keepPoints(const SolverBodyAccess& access,
             ContactPoint p = o;
             p.normal = n;
             tangentBasis(n, p.tangent);
-            Vec3 mid = 0.5f * (onA + onB);
-            p.rA = mid - a.com;
-            p.rB = mid - b.com;
+            p.point = 0.5f * (onA + onB);
             m.points[m.count++] = p;
         }
     };

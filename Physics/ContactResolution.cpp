@@ -9,43 +9,61 @@
 
 namespace physics {
 
-SolverBody SceneBodyAccess::load(RBDynamics* root) const {
-    if (!root) return SolverBodyAccess::load(nullptr); // the static world
+RigidBody* SceneBodyAccess::bodyOf(const RBDynamics* root) const {
+    auto it = m_bodies.find(root);
+    return it == m_bodies.end() ? nullptr : it->second;
+}
+
+SolverBody SceneBodyAccess::enter(RBDynamics* root, int slot) const {
+    if (!root) return SolverBodyAccess::enter(nullptr, slot); // the static world
     SolverBody b;
     b.root = root;
-    b.com = b.origin = toEigen(root->position);
-    b.rotation = toQuat(root->orientation);
-    b.v = toEigen(root->velocity);
-    b.w = toEigen(root->angularVelocity);
-    auto it = m_bodies.find(root);
-    RigidBody* body = it == m_bodies.end() ? nullptr : it->second;
+    RigidBody* body = bodyOf(root);
     // The contacts were found at the step's starting poses: anchors are measured there.
-    b.startOrigin = body ? toEigen(body->previousPosition()) : b.origin;
-    b.startRotation = body ? body->previousRotation() : b.rotation;
-    if (body && body->asleep()) b.v = b.w = Vec3::Zero();
-    if (!body || body->asleep() || body->dying() || body->pendingRemoval ||
-        root->physicsType == PHYS_FixedInSpace)
-        return b; // immovable here: not ours to move, or at rest
-    buildComposite(body, m_bodies, m_gravity, m_scratch);
-    if (m_scratch.kinematic) return b;
+    b.startOrigin = body ? toEigen(body->previousPosition()) : toEigen(root->position);
+    b.startRotation = body ? body->previousRotation() : toQuat(root->orientation);
+    const bool moves = body && !body->asleep() && !body->dying() && !body->pendingRemoval &&
+                       root->physicsType != PHYS_FixedInSpace && !isKinematicChain(*root);
+    if (!moves) { // not ours to move, or at rest
+        refresh(b);
+        return b;
+    }
+    body->solverSlot = slot;
+    b.origin = b.startOrigin;
+    b.rotation = b.startRotation;
+    return b;
+}
+
+void SceneBodyAccess::refresh(SolverBody& b) const {
+    const RBDynamics& d = *b.root;
+    b.com = b.origin = toEigen(d.position);
+    b.rotation = toQuat(d.orientation);
+    RigidBody* body = bodyOf(b.root);
+    const bool still = body && body->asleep();
+    b.v = still ? Vec3::Zero() : toEigen(d.velocity);
+    b.w = still ? Vec3::Zero() : toEigen(d.angularVelocity);
+}
+
+void SceneBodyAccess::setMotion(SolverBody& b, RigidBody* body, const Composite& c, const Vec3& v,
+                                const Vec3& w, const Vec3& dv, const Vec3& dw) const {
     // The contacts were found at the step's starting pose, so lever arms are measured from the centre of
     // mass there (measuring from the integrated pose skews every torque by v dt and pumps energy into
-    // rocking stacks). Velocities are converted at the integrated pose, where they were written.
-    Quat q0 = body->previousRotation();
-    b.com = toEigen(body->previousPosition()) - q0 * m_scratch.rootOffset;
-    b.v -= b.w.cross(b.rotation * m_scratch.rootOffset);
-    b.dv = body->forceDv;
-    b.dw = body->forceDw;
-    b.invMass = m_scratch.invMass;
-    b.invInertia = worldInverseInertia(m_scratch, q0);
-    m_mass[root] = Mass{body, m_scratch.rootOffset, m_scratch.inertia};
-    return b;
+    // rocking stacks).
+    const Quat& q0 = b.startRotation;
+    b.com = b.startOrigin - q0 * c.rootOffset;
+    b.v = v;
+    b.w = w;
+    b.dv = dv;
+    b.dw = dw;
+    b.invMass = c.invMass;
+    b.invInertia = worldInverseInertia(c, q0);
+    m_mass[b.root] = Mass{body, c.rootOffset, c.inertia};
 }
 
 bool SceneBodyAccess::alive(const RBDynamics* root) const {
     if (!root) return true;
-    auto it = m_bodies.find(root);
-    return it != m_bodies.end() && !it->second->dying() && !it->second->pendingRemoval;
+    RigidBody* body = bodyOf(root);
+    return body && !body->dying() && !body->pendingRemoval;
 }
 
 void SceneBodyAccess::storeVelocity(const SolverBody& b) const {
@@ -60,8 +78,13 @@ void SceneBodyAccess::storeVelocity(const SolverBody& b) const {
 
 void SceneBodyAccess::acceptWrites(const std::vector<SolverBody>& bodies) const {
     for (const SolverBody& b : bodies) {
-        if (!b.root || b.invMass == 0.0f) continue;
+        if (!b.root) continue;
+        if (b.invMass == 0.0f) {
+            if (RigidBody* entered = bodyOf(b.root)) entered->solverSlot = -1; // entered, never completed
+            continue;
+        }
         RigidBody* body = m_mass.find(b.root)->body;
+        body->solverSlot = -1;
         body->writtenOmega = b.root->angularVelocity;
         body->writtenMomentum = b.root->angularMomentum;
         body->writtenOrientation = b.root->orientation;

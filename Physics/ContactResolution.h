@@ -2,10 +2,11 @@
 // are advanced with solved velocities, and the islands that decide who sleeps.
 //
 // Bodies enter the solver as composites (an attachment chain is one body about its combined centre of mass).
-// A body this scene does not simulate (another owner's, a sleeping one) enters as immovable, keeping its
-// velocity, so a game-animated body still pushes. A body the solver moves is moved again from the step's
-// starting pose through the solver's sub-steps (semi-implicit Euler, whatever the integrator), with what its
-// integrator did to its velocities added a share per sub-step, so it never moves into what it touches.
+// A body this scene does not simulate (another owner's, a sleeping one, a kinematic one) enters as
+// immovable, keeping its velocity, so a game-animated body still pushes. A body the solver moves enters at
+// the step's start, before its forces act; the integrator then works out only what the forces do to its
+// velocities (setMotion), and the solver's sub-steps move it through the step, once (semi-implicit Euler,
+// with that change added a share per sub-step), so it never moves into what it touches.
 #pragma once
 
 #include "Composite.h"
@@ -31,10 +32,17 @@ public:
         m_mass.clear();
     }
 
-    SolverBody load(RBDynamics* root) const override;
+    // A movable body enters with its start pose only and RigidBody::solverSlot set: setMotion completes it.
+    SolverBody enter(RBDynamics* root, int slot) const override;
+    void refresh(SolverBody& b) const override;
+    // A movable body's motion once its forces acted: its composite's velocities v and w about the centre of
+    // mass, and what the forces added to them over the step (dv, dw).
+    void setMotion(SolverBody& b, RigidBody* body, const Composite& c, const Vec3& v, const Vec3& w,
+                   const Vec3& dv, const Vec3& dw) const;
     void storeVelocity(const SolverBody& b) const override;
     bool alive(const RBDynamics* root) const override;
-    // Records the solver's writes as the simulator's own, so the next step does not take them for edits.
+    // Records the solver's writes as the simulator's own, so the next step does not take them for edits;
+    // every body leaves the solver (solverSlot -1).
     void acceptWrites(const std::vector<SolverBody>& bodies) const;
 
 private:
@@ -45,8 +53,8 @@ private:
     };
     const BodyMap& m_bodies;
     Vec3 m_gravity = Vec3::Zero();
+    RigidBody* bodyOf(const RBDynamics* root) const;
     mutable FlatMap<const RBDynamics*, Mass> m_mass;
-    mutable Composite m_scratch;
 };
 
 // Union-find over the scene's bodies, joined by this step's contacts: the islands that sleep and wake

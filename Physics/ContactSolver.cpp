@@ -48,7 +48,7 @@ void turnAndMove(SolverBody& b, const Vec3& dp, const Vec3& dtheta) {
 } // namespace
 
 // --- default body access: one RBDynamics, no attachments ---
-SolverBody SolverBodyAccess::load(RBDynamics* root) const {
+SolverBody SolverBodyAccess::enter(RBDynamics* root, int) const {
     SolverBody b;
     b.root = root;
     if (!root) return b; // the static world
@@ -80,13 +80,27 @@ void SolverBodyAccess::storePose(const SolverBody& b) const {
 }
 
 // --- the solve, top to bottom ---
-void ContactSolver::solve(const CollisionContact* contacts, size_t count, float dt,
-                          const SolverBodyAccess& access) {
+void ContactSolver::collect(const CollisionContact* contacts, size_t count, const SolverBodyAccess& access) {
+    m_bodies.clear();
+    m_bodyIndex.clear();
     buildManifolds(contacts, count, access);
     matchPreviousImpulses();
+}
+
+void ContactSolver::recollect(const CollisionContact* contacts, size_t count,
+                              const SolverBodyAccess& access) {
+    buildManifolds(contacts, count, access);
+    matchPreviousImpulses();
+}
+
+void ContactSolver::dropManifolds() { m_manifolds.clear(); }
+
+void ContactSolver::solve(float dt, const SolverBodyAccess& access) {
+    for (SolverBody& b : m_bodies)
+        if (b.root && !movable(b)) access.refresh(b); // a kinematic body has moved since it entered
     prepare(dt);
     orderByLevel();
-    startBodies();
+    splitForces();
     const int n = std::max(1, m_settings.substeps);
     const float h = dt / float(n);
     m_dt = dt;
@@ -124,6 +138,8 @@ void ContactSolver::prepare(float dt) {
         const SolverBody &a = m_bodies[m.a], &b = m_bodies[m.b];
         for (int i = 0; i < m.count; ++i) {
             ContactPoint& p = m.points[i];
+            p.rA = p.point - a.com;
+            p.rB = p.point - b.com;
             float masses[3];
             for (int row = 0; row < 3; ++row) {
                 const Vec3& d = row == 0 ? p.normal : p.tangent[row - 1];
@@ -145,12 +161,11 @@ void ContactSolver::prepare(float dt) {
     }
 }
 
-// Movable bodies go back to where the step started, with the velocities they had before the forces acted.
-void ContactSolver::startBodies() {
+// Movable bodies start the sub-steps from the velocities they had before the forces acted (and from where
+// the step started, where they entered): each sub-step adds its share of what the forces did.
+void ContactSolver::splitForces() {
     for (SolverBody& b : m_bodies) {
         if (!movable(b)) continue;
-        b.origin = b.startOrigin;
-        b.rotation = b.startRotation;
         b.v -= b.dv;
         b.w -= b.dw;
     }

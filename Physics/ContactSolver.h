@@ -56,13 +56,16 @@ bool immovable(const RBDynamics& d);
 
 // How the solver reads and writes a body. The default works on a single RBDynamics whose forces already
 // acted, all of them the same uniform field: forceVelocity is what they added to every movable body's
-// velocity this step (gravity: g dt). The scene supplies composite mass properties and what each body's
-// forces did.
+// velocity this step (gravity: g dt). The scene enters a body it will move before its forces act, and
+// completes it once they did (SceneBodyAccess).
 class SolverBodyAccess {
 public:
     explicit SolverBodyAccess(const Vec3& forceVelocity = Vec3::Zero()) : m_forceVelocity(forceVelocity) {}
     virtual ~SolverBodyAccess() = default;
-    virtual SolverBody load(RBDynamics* root) const;
+    // A body as it enters the solver (slot: its index among the solver's bodies; nullptr: the static world).
+    virtual SolverBody enter(RBDynamics* root, int slot) const;
+    // An immovable body's pose and velocities as the step left them, just before the solve.
+    virtual void refresh(SolverBody&) const {}
     // Writes back v and w (and the angular momentum that goes with w).
     virtual void storeVelocity(const SolverBody& b) const;
     // Writes back the frame (origin, rotation) the sub-steps moved a movable body to.
@@ -79,9 +82,23 @@ public:
     void setSettings(const SolverSettings& s) { m_settings = s; }
     const SolverSettings& settings() const { return m_settings; }
 
-    // Solves the contacts found at the step's starting poses and moves the bodies they touch through the
-    // step.
-    void solve(const CollisionContact* contacts, size_t count, float dt, const SolverBodyAccess& access);
+    // The two stages of a step's contact resolution:
+    //  1. collect, at the step's starting poses, before any force acts: this step's manifolds, last step's
+    //     points kept, impulses matched for the warm start; the bodies they touch enter through access.
+    //  2. solve, once the forces acted (each movable body's velocities and what the forces added, written
+    //     into body(i) by whoever entered it): moves those bodies through the step, from where it started.
+    void collect(const CollisionContact* contacts, size_t count, const SolverBodyAccess& access);
+    SolverBody& body(int slot) { return m_bodies[size_t(slot)]; }
+    // Between the stages, when the contacts changed (a geometry deleted, the space gone): the manifolds again
+    // from what is left, or none; the bodies that entered stay and are still moved.
+    void recollect(const CollisionContact* contacts, size_t count, const SolverBodyAccess& access);
+    void dropManifolds();
+    void solve(float dt, const SolverBodyAccess& access);
+    // Both stages at once, for an access whose bodies are complete as they enter.
+    void solve(const CollisionContact* contacts, size_t count, float dt, const SolverBodyAccess& access) {
+        collect(contacts, count, access);
+        solve(dt, access);
+    }
 
     // Forgets last step's impulses (no warm start next step).
     void clear();
@@ -103,7 +120,7 @@ private:
     void storeImpulses();
     // ContactSolver.cpp
     void prepare(float dt);
-    void startBodies();
+    void splitForces();
     void addForces(float share);
     void warmStart(bool firstSubstep);
     // A point's normal target for one sweep: reach v_n = -bias, softly (Catto's soft constraint).

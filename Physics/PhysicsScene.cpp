@@ -234,7 +234,7 @@ void PhysicsScene::writeFrames(float alpha) {
 // --- the step ---
 
 void PhysicsScene::step(float dt) {
-    // 1. Game code at the physics rate. It may add, remove or delete bodies: removals wait for step 9.
+    // 1. Game code at the physics rate. It may add, remove or delete bodies: removals wait for step 10.
     runFixedUpdaters(dt);
 
     // 2. Take in the game's edits: a written pose or a moved frame teleports the body; an invalid state is
@@ -281,28 +281,41 @@ void PhysicsScene::step(float dt) {
         m_islands.wakeTouched(m_bodies);
     }
 
-    // 5. Integrate each awake composite: unattached bodies and attachment roots. Attached bodies ride along.
+    // 5. The contact solver collects this step's manifolds at the starting poses, before any force acts. The
+    //    bodies they touch enter it: it moves them through the step in step 7.
+    const bool solving = contactCount > 0;
+    if (solving) {
+        m_bodyAccess.startStep(toEigen(m_gravity));
+        m_solver.collect(contacts, contactCount, m_bodyAccess);
+    }
+
+    // 6. Forces on each awake composite (unattached bodies and attachment roots; attached bodies ride
+    //    along). A free body is moved by the game's integrator; for one the solver moves, the integrator
+    //    only works out what the forces do to its velocities.
     for (size_t i = 0; i < m_bodies.size(); ++i) {
         RigidBody* b = m_bodies[i];
         if (b->dying() || b->pendingRemoval || b->asleep() || b->getDynamics().attachedTo()) continue;
         integrateComposite(b, dt);
     }
 
-    // 6. Resolve contacts: impulses on the velocities the forces produced, the touched bodies advanced from
-    //    the step's start with the solved velocities, then leftover overlap pushed out.
-    //    Force generators may have deleted or replaced the space (its contact list went with it) or
-    //    deleted geometry (the space dropped its contacts): the list is read again.
-    if (contactCount > 0 && m_space && m_spaceVersion == spaceVersion) {
-        contacts = m_space->getContactList();
-        contactCount = m_space->getNumContacts();
-        if (contactCount > 0) resolveContacts(contacts, contactCount, dt);
+    // 7. Resolve contacts: the touched bodies move from the step's start in sub-steps, impulses keeping them
+    //    apart, their forces added a share per sub-step; then leftover overlap is pushed out.
+    //    A force generator may have deleted the space or a geometry in contact (the space dropped its
+    //    contacts): the manifolds are collected again from what is left (never read from freed memory).
+    if (solving) {
+        if (!m_space || m_spaceVersion != spaceVersion)
+            m_solver.dropManifolds();
+        else if (m_space->getContactList() != contacts || m_space->getNumContacts() != contactCount)
+            m_solver.recollect(m_space->getContactList(), m_space->getNumContacts(), m_bodyAccess);
+        m_solver.solve(dt, m_bodyAccess);
+        m_bodyAccess.acceptWrites(m_solver.bodies());
     }
 
-    // 6b. Continuous collision: a body whose motion passed into or through something goes back to where it
+    // 7b. Continuous collision: a body whose motion passed into or through something goes back to where it
     //     first touched it; the next step resolves that contact (ContinuousStage.h).
     if (m_continuousOn) m_continuous.run(m_bodies, m_space);
 
-    // 7. A step that produced NaN or Inf (absurd forces) is undone; otherwise it is the new valid state.
+    // 8. A step that produced NaN or Inf (absurd forces) is undone; otherwise it is the new valid state.
     for (size_t i = 0; i < m_bodies.size(); ++i) {
         RigidBody* b = m_bodies[i];
         if (b->dying() || b->pendingRemoval || b->asleep()) continue;
@@ -314,11 +327,11 @@ void PhysicsScene::step(float dt) {
             if (!b->dying() && !b->pendingRemoval && !b->asleep()) b->recordStepPose();
     }
 
-    // 8. Islands that rested long enough fall asleep.
+    // 9. Islands that rested long enough fall asleep.
     //    RBDynamics::sleeping tells the collision space which pairs need no test.
     if (m_sleeping) m_islands.updateSleep(m_bodies, dt);
 
-    // 9. Removals and deletions requested during the step.
+    // 10. Removals and deletions requested during the step.
     ++m_steps;
     flushDeferred();
 }
@@ -357,17 +370,22 @@ void PhysicsScene::integrateComposite(RigidBody* body, float dt) {
         Vec3 omega1 = c.kinematic ? omega : Vec3(worldInverseInertia(c, s.q) * s.L);
         body->forceDv = s.v - v0;
         body->forceDw = omega1 - omega;
-        Vec3 arm1 = s.q * c.rootOffset;
-        d.position = toVector(s.x + arm1);
-        d.velocity = toVector(s.v + omega1.cross(arm1));
-        d.angularVelocity = toVector(omega1);
-        d.angularMomentum = c.kinematic ? toVector(worldInertia(c, s.q) * omega) : toVector(s.L);
-        d.orientation = toOrientation(s.q);
-
+        if (body->solverSlot >= 0 && !c.kinematic) {
+            // The contact solver moves it from where it is: it takes only the velocities' change.
+            m_bodyAccess.setMotion(m_solver.body(body->solverSlot), body, c, s.v, omega1, body->forceDv,
+                                   body->forceDw);
+        } else {
+            Vec3 arm1 = s.q * c.rootOffset;
+            d.position = toVector(s.x + arm1);
+            d.velocity = toVector(s.v + omega1.cross(arm1));
+            d.angularVelocity = toVector(omega1);
+            d.angularMomentum = c.kinematic ? toVector(worldInertia(c, s.q) * omega) : toVector(s.L);
+            d.orientation = toOrientation(s.q);
+            body->rotation = s.q;
+        }
         body->writtenOmega = d.angularVelocity;
         body->writtenMomentum = d.angularMomentum;
         body->writtenOrientation = d.orientation;
-        body->rotation = s.q;
         body->hasComposite = true;
         body->compositeMass = c.mass;
         body->compositeInertia = c.inertia;

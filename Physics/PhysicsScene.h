@@ -89,8 +89,9 @@ private:
     ~PhysicsScene();
     void step(float dt);
     void runFixedUpdaters(float dt);
+    // Forces on a composite over dt: moves it, or (one the contact solver moves) hands the solver its
+    // velocities.
     void integrateComposite(RigidBody* root, float dt);
-    void resolveContacts(const CollisionContact* contacts, size_t count, float dt);
     void flushDeferred();
     // HitWall once a frame (iCollisionEvents): the space holds its events while the scene steps, and the
     // scene delivers them after the steps (PhysicsSceneContacts.cpp).

@@ -1,4 +1,4 @@
-// PhysicsSceneContacts.cpp - the scene's contact resolution step and its solver and sleeping settings.
+// PhysicsSceneContacts.cpp - the scene's collision events and its solver and sleeping settings.
 #include "PhysicsScene.h"
 
 #include "MathEigen.h"
@@ -7,12 +7,6 @@
 #include "iUtilities.h"
 
 namespace physics {
-
-void PhysicsScene::resolveContacts(const CollisionContact* contacts, size_t count, float dt) {
-    m_bodyAccess.startStep(toEigen(m_gravity));
-    m_solver.solve(contacts, count, dt, m_bodyAccess);
-    m_bodyAccess.acceptWrites(m_solver.bodies());
-}
 
 void PhysicsScene::holdCollisionEvents() {
     if (iCollisionEvents* events = m_space ? eventsOf(m_space) : nullptr) events->holdEvents(true);

@@ -125,6 +125,8 @@ public:
     Vec3 forceDv = Vec3::Zero(), forceDw = Vec3::Zero();
     // Composite mass properties of the last step (a change means attach/detach or new inertia: keep w).
     bool hasComposite = false;
+    // Its index among the contact solver's bodies while the solver moves it through this step (-1: not).
+    int solverSlot = -1;
     float compositeMass = 0;
     Mat3 compositeInertia = Mat3::Zero();
 
