@@ -195,6 +195,7 @@ void PhysicsScene::update(int now) {
         writeFrames(float(m_accumulator) / 1000.0f);
         return;
     }
+    m_profiler.beginUpdate();
     holdCollisionEvents();
     m_accumulator += (std::int64_t(now) - m_lastNow) * m_stepRate;
     m_lastNow = now;
@@ -217,6 +218,8 @@ void PhysicsScene::update(int now) {
         }
     }
     if (!m_deleteRequested) deliverCollisionEvents(); // HitWall once a frame per touching pair
+    m_profiler.lap(&PhysicsProfile::events);
+    m_profiler.endUpdate();
     if (m_deleteRequested) {
         delete this;
         return;
@@ -236,6 +239,7 @@ void PhysicsScene::writeFrames(float alpha) {
 void PhysicsScene::step(float dt) {
     // 1. Game code at the physics rate. It may add, remove or delete bodies: removals wait for step 10.
     runFixedUpdaters(dt);
+    m_profiler.lap(&PhysicsProfile::updaters);
 
     // 2. Take in the game's edits: a written pose or a moved frame teleports the body; an invalid state is
     //    reported and replaced by the body's last valid one; a sleeping body the game touched wakes. The pose
@@ -259,6 +263,7 @@ void PhysicsScene::step(float dt) {
                 b->recordPreviousPose();
             }
     }
+    m_profiler.lap(&PhysicsProfile::edits);
 
     // 3. Contacts at the step's starting poses. Listeners hear of them after the steps (HitWall, once per
     //    frame), or now with a space that cannot hold its events; they may delete things.
@@ -274,12 +279,14 @@ void PhysicsScene::step(float dt) {
             contactCount = space->getNumContacts();
         }
     }
+    m_profiler.lap(&PhysicsProfile::collision);
 
     // 4. Islands of touching bodies: a sleeping body touched by an awake one wakes with its island.
     if (m_sleeping) {
         m_islands.build(m_bodies, m_byDynamics, contacts, contactCount);
         m_islands.wakeTouched(m_bodies);
     }
+    m_profiler.lap(&PhysicsProfile::islands);
 
     // 5. The contact solver collects this step's manifolds at the starting poses, before any force acts. The
     //    bodies they touch enter it: it moves them through the step in step 7.
@@ -288,6 +295,7 @@ void PhysicsScene::step(float dt) {
         m_bodyAccess.startStep(toEigen(m_gravity));
         m_solver.collect(contacts, contactCount, m_bodyAccess);
     }
+    m_profiler.lap(&PhysicsProfile::solver);
 
     // 6. Forces on each awake composite (unattached bodies and attachment roots; attached bodies ride
     //    along). A free body is moved by the game's integrator; for one the solver moves, the integrator
@@ -297,6 +305,7 @@ void PhysicsScene::step(float dt) {
         if (b->dying() || b->pendingRemoval || b->asleep() || b->getDynamics().attachedTo()) continue;
         integrateComposite(b, dt);
     }
+    m_profiler.lap(&PhysicsProfile::integration);
 
     // 7. Resolve contacts: the touched bodies move from the step's start in sub-steps, impulses keeping them
     //    apart, their forces added a share per sub-step; then leftover overlap is pushed out.
@@ -310,10 +319,12 @@ void PhysicsScene::step(float dt) {
         m_solver.solve(dt, m_bodyAccess);
         m_bodyAccess.acceptWrites(m_solver.bodies());
     }
+    m_profiler.lap(&PhysicsProfile::solver);
 
     // 7b. Continuous collision: a body whose motion passed into or through something goes back to where it
     //     first touched it; the next step resolves that contact (ContinuousStage.h).
     if (m_continuousOn) m_continuous.run(m_bodies, m_space);
+    m_profiler.lap(&PhysicsProfile::continuous);
 
     // 8. A step that produced NaN or Inf (absurd forces) is undone; otherwise it is the new valid state.
     for (size_t i = 0; i < m_bodies.size(); ++i) {
@@ -334,6 +345,20 @@ void PhysicsScene::step(float dt) {
     // 10. Removals and deletions requested during the step.
     ++m_steps;
     flushDeferred();
+    countStep(contactCount, solving);
+    m_profiler.lap(&PhysicsProfile::sleeping);
+}
+
+void PhysicsScene::countStep(size_t contacts, bool solved) {
+    PhysicsProfile& p = m_profiler.current();
+    p.steps += 1;
+    p.bodies = m_bodies.size();
+    p.awakeBodies = getAwakeBodyCount();
+    p.contacts = contacts;
+    p.touchingPairs = solved ? m_solver.manifolds().size() : 0;
+    p.solverRows = 0;
+    if (solved)
+        for (const Manifold& m : m_solver.manifolds()) p.solverRows += 3 * size_t(m.count);
 }
 
 void PhysicsScene::runFixedUpdaters(float dt) {

@@ -11,8 +11,10 @@
 #include "ContactResolution.h"
 #include "ContactSolver.h"
 #include "ContinuousStage.h"
+#include "StepProfiler.h"
 #include "iPhysicsScene.h"
 #include "iPhysicsSceneHooks.h"
+#include "iPhysicsSceneProfile.h"
 #include "iPhysicsSceneSettings.h"
 #include "iPhysicsSceneStats.h"
 
@@ -27,7 +29,8 @@ class RigidBody;
 class PhysicsScene final : public iPhysicsScene,
                            public iPhysicsSceneSettings,
                            public iPhysicsSceneHooks,
-                           public iPhysicsSceneStats {
+                           public iPhysicsSceneStats,
+                           public iPhysicsSceneProfile {
 public:
     PhysicsScene();
     PhysicsScene(const PhysicsScene&) = delete;
@@ -47,7 +50,7 @@ public:
     void remove(const iRigidBody* o) override;
     void Delete() const override;
 
-    // --- iPhysicsSceneSettings, iPhysicsSceneHooks, iPhysicsSceneStats ---
+    // --- iPhysicsSceneSettings, iPhysicsSceneHooks, iPhysicsSceneStats, iPhysicsSceneProfile ---
     bool setGravity(const Vector& g) override;
     Vector getGravity() const override { return m_gravity; }
     bool setStepRate(int hz) override;
@@ -73,6 +76,7 @@ public:
     size_t getAwakeBodyCount() const override;
     float getMaxPenetration() const override { return m_solver.maxPenetrationBefore(); }
     float getRemainingPenetration() const override { return m_solver.maxPenetrationAfter(); }
+    const PhysicsProfile& getProfile() const override { return m_profiler.profile(); }
 
     // --- the bodies' side ---
     bool busy() const { return m_busy; } // inside update(): removals and deletions are deferred
@@ -89,6 +93,7 @@ private:
     ~PhysicsScene();
     void step(float dt);
     void runFixedUpdaters(float dt);
+    void countStep(size_t contacts, bool solved); // the profile's counts after a step
     // Forces on a composite over dt: moves it, or (one the contact solver moves) hands the solver its
     // velocities.
     void integrateComposite(RigidBody* root, float dt);
@@ -135,6 +140,7 @@ private:
     bool m_sleeping = true;
     ContinuousStage m_continuous;
     bool m_continuousOn = true;
+    StepProfiler m_profiler;
 };
 
 } // namespace physics
