@@ -4,7 +4,7 @@
 // Usage: ReferenceGame [--scene NAME|all] [--frames N] [--csv FILE] [--csv-every N] [--track NAME]...
 //                      [--list] [--help]
 // Each scene ends with a verdict line on stdout: "OK <scene>" or "FAIL <scene>: <reason>". --csv writes the
-// per-second measurements as CSV (CsvLog.h: columns), --track prints the position
+// per-second measurements as CSV (CsvLog.h: columns; scripts/plot.sh plots them), --track prints the position
 // of a body a scene named (World::name) each second. The run itself is GameRun.h's runScene.
 // Exit status: 0 when every scene held together (and for --list, --help), 1 when one blew up (NaN, energy
 // growth, deep penetration), 2 on bad arguments.
@@ -34,6 +34,7 @@ const char* const kUsage =
     "  --help            print this and exit\n"
     "Each second: t, awake/moving bodies (\"asleep\" when all sleep), contacts, KE, deepest overlap, hits.\n"
     "Each scene ends with \"OK <scene>\" or \"FAIL <scene>: <reason>\".\n"
+    "scripts/plot.sh CSV OUTDIR plots a --csv file.\n"
     "Exit status: 0 every scene held together, 1 a scene blew up, 2 bad arguments.\n";
 
 int usage() { // bad arguments

@@ -2,6 +2,7 @@
 # Builds the reference game (Release) and runs it headless; arguments go to the game.
 # Usage: scripts/game.sh [--scene NAME|all] [--frames N] [--csv FILE] [--csv-every N] [--track NAME]...
 #                       [--list] [--help]
+# (scripts/plot.sh CSV OUTDIR plots a --csv file.)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 for arg in "$@"; do
@@ -23,6 +24,7 @@ Builds the reference game (Release, in build-release/) and runs it headless with
   --help            print this and exit
 Each second: t, awake/moving bodies ("asleep" when all sleep), contacts, KE, deepest overlap, hits.
 Each scene ends with "OK <scene>" or "FAIL <scene>: <reason>".
+scripts/plot.sh CSV OUTDIR plots a --csv file.
 Exit status: 0 every scene held together, 1 a scene blew up, 2 bad arguments.
 USAGE
     exit 0

@@ -1,7 +1,7 @@
 # The reference game's command line, as a new user meets it: --help prints usage and exits 0 (scripts/game.sh
 # --help too, building nothing, with the same options), bad arguments exit 2 with the usage on stderr, and a
-# scene ends with its verdict line "OK <scene>"; --csv writes its file (one per scene with --scene all) and
-# --track prints its body each second.
+# scene ends with its verdict line "OK <scene>"; --csv writes its file (one per scene with --scene all),
+# --track prints its body each second, and scripts/plot.sh turns a CSV into PNGs (when gnuplot is installed).
 # Run as: cmake -DGAME=<ReferenceGame> -DROOT=<source dir> -DWORK=<scratch dir> -P check_cli.cmake
 cmake_minimum_required(VERSION 3.20)
 
@@ -65,6 +65,27 @@ foreach(scene tower pyramid ballpit dominoes cradle shooting)
     message(FATAL_ERROR "ReferenceGame --scene all --csv runs.csv: exit ${rc}, no runs-${scene}.csv:\n${err}")
   endif()
 endforeach()
+
+# scripts/plot.sh: bad arguments exit 2 with its usage; with gnuplot, four PNG files from the cradle's CSV.
+run(rc out err "${ROOT}/scripts/plot.sh")
+if(NOT rc EQUAL 2 OR NOT err MATCHES "usage: scripts/plot.sh")
+  message(FATAL_ERROR "scripts/plot.sh without arguments: exit ${rc} (want 2), stderr:\n${err}")
+endif()
+run(rc out err "${ROOT}/scripts/plot.sh" "${WORK}/nosuch.csv" "${WORK}/plots")
+if(NOT rc EQUAL 2)
+  message(FATAL_ERROR "scripts/plot.sh on a missing CSV: exit ${rc} (want 2), stderr:\n${err}")
+endif()
+find_program(GNUPLOT gnuplot)
+if(GNUPLOT)
+  run(rc out err "${ROOT}/scripts/plot.sh" "${WORK}/cradle.csv" "${WORK}/plots")
+  foreach(png cradle cradle-kinetic cradle-awake cradle-overlap)
+    if(NOT rc EQUAL 0 OR NOT EXISTS "${WORK}/plots/${png}.png")
+      message(FATAL_ERROR "scripts/plot.sh: exit ${rc}, no ${png}.png:\n${out}\n${err}")
+    endif()
+  endforeach()
+else()
+  message(STATUS "gnuplot not installed: scripts/plot.sh's plotting not checked")
+endif()
 
 run(rc out err "${ROOT}/scripts/game.sh" --help)
 if(NOT rc EQUAL 0 OR NOT out MATCHES "usage: scripts/game.sh")
