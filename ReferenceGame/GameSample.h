@@ -17,5 +17,5 @@ struct GameSample {
     float overlap = 0;      // deepest overlap the solver left this step, m
     float worstOverlap = 0; // deepest overlap since the start, m
     long hits = 0;          // HitWall calls heard since the start
-    bool allAsleep() const { return awake == 0 && bodies > 0; }
+    bool allAsleep() const { return awake == 0 && moving > 0; }
 };
