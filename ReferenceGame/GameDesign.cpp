@@ -1,11 +1,14 @@
-// GameDesign.cpp - scene building, hit counting, the per-second summary and the blow-up checks.
+// GameDesign.cpp - scene building, hit counting, the per-second summary, CSV rows and the blow-up checks.
 #include "GameDesign.h"
 
+#include "CsvLog.h"
+#include "RBDynamics.h"
 #include "World.h"
 #include "iCollisionListener.h"
 #include "iCollisionSpace.h"
 #include "iPhysicsFrame.h"
 #include "iPhysicsScene.h"
+#include "iPhysicsSceneSettings.h"
 #include "iPhysicsSceneStats.h"
 #include "iRigidBody.h"
 
@@ -22,8 +25,9 @@ namespace {
 const float kEnergyTolerance = 0.02f, kEnergySlackJ = 1.0f, kMaxPenetration = 0.25f;
 } // namespace
 
-GameDesign::GameDesign(iPhysicsScene* scene, const SceneSpec& spec, int frames)
-    : m_scene(scene), m_spec(spec), m_frames(frames) {}
+GameDesign::GameDesign(iPhysicsScene* scene, const SceneSpec& spec, const GameOptions& options, CsvLog* csv)
+    : m_scene(scene), m_spec(spec), m_options(options), m_csv(csv), m_frames(options.frames),
+      m_csvEvery(options.csvEvery) {}
 
 GameDesign::~GameDesign() {
     delete m_world;
@@ -38,7 +42,13 @@ void GameDesign::initialize(int now) {
     for (iPhysicsFrame* f : m_world->bodies()) f->getRB()->attachListener(m_hits);
     m_energyBudget = m_world->mechanicalEnergy();
     m_wallStart = std::chrono::steady_clock::now();
-    std::printf("scene %s: %s; %zu bodies\n", m_spec.name, m_spec.description, m_world->bodies().size());
+    std::fprintf(m_options.out, "scene %s: %s; %zu bodies\n", m_spec.name, m_spec.description,
+                 m_world->bodies().size());
+    m_tracker.resolve(*m_world, m_options.track, m_spec.name, m_options.err);
+    if (m_csv) {
+        m_csv->header(m_tracker.names());
+        m_csv->row(measure(now, 0), m_tracker.positions()); // the start, t = 0
+    }
 }
 
 void GameDesign::update(int now) {
@@ -63,23 +73,51 @@ void GameDesign::update(int now) {
     else if (penetration > kMaxPenetration)
         m_failure = "a contact is deeper than 0.25 m";
     int second = (now - m_start) / 1000;
-    if (second != m_lastSecond || finished()) {
-        m_lastSecond = second;
-        summarise(now);
+    bool summary = second != m_lastSecond || finished();
+    if (summary || (m_csv && m_csvEvery > 0 && m_frame % m_csvEvery == 0)) {
+        const GameSample s = measure(now, penetration);
+        if (m_csv && (m_csvEvery > 0 ? m_frame % m_csvEvery == 0 || finished() : summary))
+            m_csv->row(s, m_tracker.positions());
+        if (summary) {
+            m_lastSecond = second;
+            summarise(s);
+        }
     }
-    if (m_failure) std::printf("BLEW UP at %.3f s: %s\n", (now - m_start) / 1000.0, m_failure);
+    if (m_failure)
+        std::fprintf(m_options.out, "BLEW UP at %.3f s: %s\n", (now - m_start) / 1000.0, m_failure);
 }
 
-void GameDesign::summarise(int now) {
+GameSample GameDesign::measure(int now, float penetration) const {
+    GameSample s;
+    s.time = (now - m_start) / 1000.0;
+    const iPhysicsSceneStats* stats = statsOf(m_scene);
+    s.simTime = double(stats->getStepCount()) / settingsOf(m_scene)->getStepRate();
+    s.frame = m_frame;
+    s.kinetic = m_world->kineticEnergy();
+    s.mechanical = m_world->mechanicalEnergy();
+    s.awake = stats->getAwakeBodyCount();
+    s.bodies = stats->getBodyCount();
+    for (const iPhysicsFrame* f : m_world->bodies())
+        s.moving += f->getDynamics()->physicsType != PHYS_FixedInSpace;
+    s.contacts = m_world->space()->getNumContacts();
+    s.overlap = penetration;
+    s.worstOverlap = m_worstPenetration;
+    s.hits = m_hits->hits;
+    return s;
+}
+
+void GameDesign::summarise(const GameSample& s) {
     auto wall = std::chrono::steady_clock::now();
     double ms = std::chrono::duration<double, std::milli>(wall - m_wallStart).count();
     double perFrame = m_framesThisSecond ? ms / m_framesThisSecond : 0.0;
     m_wallStart = wall;
     m_framesThisSecond = 0;
-    // Everything but the last column is deterministic (a stepped clock drives the run).
-    std::printf("t %6.2f s  bodies %4zu  awake %4zu  contacts %5zu  KE %10.4f J  max pen %.4f m  hits %6ld"
-                "  | %.3f ms/frame\n",
-                (now - m_start) / 1000.0, statsOf(m_scene)->getBodyCount(),
-                statsOf(m_scene)->getAwakeBodyCount(), m_world->space()->getNumContacts(),
-                m_world->kineticEnergy(), m_worstPenetration, m_hits->hits, perFrame);
+    // Everything but the last column is deterministic (a stepped clock drives the run). "asleep": every
+    // moving body sleeps, so no contact is tested (contacts 0) and nothing moves.
+    std::fprintf(m_options.out,
+                 "t %6.2f s  awake %4zu/%-4zu%s  contacts %5zu  KE %10.4f J  max pen %.4f m  hits %6ld"
+                 "  | %.3f ms/frame\n",
+                 s.time, s.awake, s.moving, s.allAsleep() ? " asleep" : "       ", s.contacts, s.kinetic,
+                 s.worstOverlap, s.hits, perFrame);
+    m_tracker.print(m_options.out);
 }

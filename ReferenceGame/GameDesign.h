@@ -1,18 +1,23 @@
 // GameDesign.h - the reference game's Design: builds a named scene, counts hits with a listener, prints a
-// per-second summary, and judges whether the scene blew up.
+// per-second summary (and the tracked bodies), writes the CSV rows, and judges whether the scene blew up.
 #pragma once
 
+#include "GameRun.h"
+#include "GameSample.h"
 #include "Scenes.h"
+#include "Tracking.h"
 #include "iDesign.h"
 
 #include <chrono>
 
+class CsvLog;
 class World;
 class iPhysicsScene;
 
 class GameDesign final : public iDesign {
 public:
-    GameDesign(iPhysicsScene* scene, const SceneSpec& spec, int frames);
+    // csv: where rows go (nullptr: none); it must outlive the design.
+    GameDesign(iPhysicsScene* scene, const SceneSpec& spec, const GameOptions& options, CsvLog* csv);
     void initialize(int now) override;
     void update(int now) override;
     void reset(int) override {}
@@ -27,13 +32,17 @@ public:
 
 private:
     ~GameDesign();
-    void summarise(int now);
+    GameSample measure(int now, float penetration) const;
+    void summarise(const GameSample& s);
 
     iPhysicsScene* m_scene;
     const SceneSpec& m_spec;
+    const GameOptions& m_options;
+    CsvLog* m_csv;
+    BodyTracker m_tracker;
     World* m_world = nullptr;
     struct HitCounter* m_hits = nullptr;
-    int m_frames, m_frame = 0, m_start = 0, m_lastSecond = 0;
+    int m_frames, m_csvEvery, m_frame = 0, m_start = 0, m_lastSecond = 0;
     float m_energyBudget = 0; // the mechanical energy the scene may have: initial plus what shots inject
     float m_worstPenetration = 0;
     const char* m_failure = nullptr;

@@ -7,6 +7,7 @@
 #include "iPhysicsFrame.h"
 #include "iRigidBody.h"
 
+#include <cstring>
 #include <random>
 
 namespace {
@@ -23,6 +24,10 @@ void act(World& world, int frame) {
 void buildTower(World& world, int boxes) {
     world.ground();
     for (int i = 0; i < boxes; ++i) world.box(Vector(0, 0.5f + i, 0), kUnitHalf, 1.0f);
+    if (boxes > 0) {
+        world.name(world.bodies().front(), "bottom");
+        world.name(world.bodies().back(), "top");
+    }
 }
 
 void buildPyramid(World& world, int base) {
@@ -32,6 +37,7 @@ void buildPyramid(World& world, int base) {
         float x0 = -0.5f * (count - 1);
         for (int i = 0; i < count; ++i) world.box(Vector(x0 + i, 0.5f + row, 0), kUnitHalf, 1.0f);
     }
+    if (base > 0) world.name(world.bodies().back(), "top");
 }
 
 void buildBallPit(World& world, int balls, unsigned seed) {
@@ -57,6 +63,8 @@ void buildDominoes(World& world, int count) {
     world.ground();
     const Vector half(0.05f, 0.5f, 0.25f);
     for (int i = 0; i < count; ++i) world.box(Vector(0.6f * i, 0.5f, 0), half, 0.5f);
+    world.name(world.bodies().front(), "first");
+    world.name(world.bodies().back(), "last");
     // Push the first one's top along +x.
     RBDynamics* first = world.bodies().front()->getDynamics();
     first->ApplyImpulse(Vector(0.6f, 0, 0), first->position + Vector(0, 0.45f, 0));
@@ -70,13 +78,15 @@ void buildNewtonsCradle(World& world, int balls) {
         d->restitution = 1.0f;
         d->friction = 0.0f;
     }
-    world.bodies().front()->getDynamics()->velocity = Vector(2, 0, 0);
+    world.name(world.bodies().front(), "cue")->getDynamics()->velocity = Vector(2, 0, 0);
+    world.name(world.bodies().back(), "last");
 }
 
 void buildShootingGallery(World& world) {
     world.ground();
     for (int row = 0; row < 5; ++row)
         for (int i = 0; i < 8; ++i) world.box(Vector(-3.5f + i, 0.5f + row, 0), kUnitHalf, 1.0f);
+    world.name(world.bodies().back(), "corner"); // the top row's right-hand box
 }
 
 void shootSphere(World& world, int shot) {
@@ -112,20 +122,33 @@ void buildSpherePile(World& world, int spheres, unsigned seed) {
     for (int i = 0; i < spheres; ++i) world.sphere(pileCell(i, rng), 0.5f, 1.0f);
 }
 
-const std::vector<SceneSpec>& allScenes() {
-    static const std::vector<SceneSpec> scenes = {
-        {"tower", "10 boxes stacked", [](World& w) { buildTower(w, 10); }, nullptr},
-        {"pyramid", "210 boxes, a base of 20", [](World& w) { buildPyramid(w, 20); }, nullptr},
+// The registry: a deque, so registering never moves a SceneSpec a running game holds.
+static std::deque<SceneSpec>& registry() {
+    static std::deque<SceneSpec> scenes = {
+        {"tower", "10 boxes stacked (named: top, bottom)", [](World& w) { buildTower(w, 10); }, nullptr},
+        {"pyramid", "210 boxes, a base of 20 (named: top)", [](World& w) { buildPyramid(w, 20); }, nullptr},
         {"ballpit", "200 balls dropped into a pit", [](World& w) { buildBallPit(w, 200, 7); }, nullptr},
-        {"dominoes", "30 dominoes, the first one pushed", [](World& w) { buildDominoes(w, 30); }, nullptr},
-        {"cradle", "Newton's cradle of 5 balls", [](World& w) { buildNewtonsCradle(w, 5); }, nullptr},
-        {"shooting", "spheres shot into a wall of 40 boxes", buildShootingGallery, act},
+        {"dominoes", "30 dominoes, the first one pushed (named: first, last)",
+         [](World& w) { buildDominoes(w, 30); }, nullptr},
+        {"cradle", "Newton's cradle of 5 balls (named: cue, last)",
+         [](World& w) { buildNewtonsCradle(w, 5); }, nullptr},
+        {"shooting", "spheres shot into a wall of 40 boxes (named: corner)", buildShootingGallery, act},
     };
     return scenes;
 }
+
+const std::deque<SceneSpec>& allScenes() { return registry(); }
 
 const SceneSpec* findScene(const std::string& name) {
     for (const SceneSpec& s : allScenes())
         if (name == s.name) return &s;
     return nullptr;
+}
+
+bool registerScene(const SceneSpec& spec) {
+    if (!spec.name || !*spec.name || !spec.build || !std::strcmp(spec.name, "all") ||
+        std::strpbrk(spec.name, " \t,/") || findScene(spec.name))
+        return false;
+    registry().push_back(spec);
+    return true;
 }

@@ -1,11 +1,13 @@
 // Scenes.h - the named demo scenes, written once for the reference game, the tests and the benchmarks.
 //
-// A scene builds its bodies into a World and may act once a physics step's worth of frames (shooting).
+// A scene builds its bodies into a World and may act once a frame (shooting). A game adds its own scenes
+// with registerScene from its own files, before it runs them: the game (ReferenceGame/GameRun.h) then lists,
+// finds and runs them like the built-in ones.
 #pragma once
 
 #include <cstddef>
+#include <deque>
 #include <string>
-#include <vector>
 
 class World;
 
@@ -17,8 +19,17 @@ struct SceneSpec {
     void (*act)(World& world, int frame);
 };
 
-const std::vector<SceneSpec>& allScenes();
+// The built-in scenes, then the registered ones in registration order. Registering adds to the end and
+// leaves every SceneSpec already handed out where it is.
+const std::deque<SceneSpec>& allScenes();
 const SceneSpec* findScene(const std::string& name);
+
+// Adds a scene, an explicit call (static self-registration in a library is dropped by linkers). The name and
+// description must outlive the program (string literals). Refused (false, nothing added) when the name is
+// empty, "all", has a space, comma or slash, is already taken, or build is nullptr. Example:
+//   registerScene({"drop", "one ball falling from 20 m",
+//                  [](World& w) { w.name(w.sphere(Vector(0, 20, 0), 0.5f, 1.0f), "ball"); }, nullptr});
+bool registerScene(const SceneSpec& spec);
 
 // The builders, also used directly by tests and benchmarks.
 void buildTower(World& world, int boxes);                  // unit boxes stacked on a floor

@@ -57,6 +57,19 @@ iPhysicsFrame* World::fixedBox(const Vector& centre, const Vector& half) {
     return f;
 }
 
+iPhysicsFrame* World::name(iPhysicsFrame* body, const std::string& name) {
+    for (auto& n : m_names)
+        if (n.first == name) return n.second = body;
+    m_names.emplace_back(name, body);
+    return body;
+}
+
+iPhysicsFrame* World::named(const std::string& name) const {
+    for (const auto& n : m_names)
+        if (n.first == name) return n.second;
+    return nullptr;
+}
+
 void World::ground(float y) { m_shapes.push_back(CreateCPlane(nullptr, Vector(0, 1, 0), y)); }
 
 float World::kineticEnergy() const {

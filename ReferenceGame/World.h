@@ -5,6 +5,8 @@
 
 #include "MathDeclarations.h"
 
+#include <string>
+#include <utility>
 #include <vector>
 
 class iPhysicsScene;
@@ -33,6 +35,13 @@ public:
     iCollisionSpace* space() const { return m_space; }
     const std::vector<iPhysicsFrame*>& bodies() const { return m_bodies; }
 
+    // Names a body of this world for people (the game's --track, its CSV columns): a scene names the few
+    // bodies worth watching, e.g. name(tower.back(), "top"). A name given again moves to the new body;
+    // returns body. named() is nullptr for a name no body has.
+    iPhysicsFrame* name(iPhysicsFrame* body, const std::string& name);
+    iPhysicsFrame* named(const std::string& name) const;
+    const std::vector<std::pair<std::string, iPhysicsFrame*>>& names() const { return m_names; }
+
     // Measurements over the moving bodies.
     float kineticEnergy() const;       // translational + rotational, J
     float mechanicalEnergy() const;    // kinetic + potential against the scene's gravity, J
@@ -45,4 +54,5 @@ private:
     iCollisionSpace* m_space;
     std::vector<iPhysicsFrame*> m_bodies;
     std::vector<iCollisionGeometry*> m_shapes;
+    std::vector<std::pair<std::string, iPhysicsFrame*>> m_names; // in naming order
 };

@@ -1,16 +1,16 @@
 // main.cpp - the reference game, headless: the course engine loop (physicsScene->update(now), then
 // design->update(now)) on a stepped 16 ms clock, for one named scene or all of them.
 //
-// Usage: ReferenceGame [--scene NAME|all] [--frames N] [--list] [--help]
-// Each scene ends with a verdict line on stdout: "OK <scene>" or "FAIL <scene>: <reason>".
+// Usage: ReferenceGame [--scene NAME|all] [--frames N] [--csv FILE] [--csv-every N] [--track NAME]...
+//                      [--list] [--help]
+// Each scene ends with a verdict line on stdout: "OK <scene>" or "FAIL <scene>: <reason>". --csv writes the
+// per-second measurements as CSV (CsvLog.h: columns; scripts/plot.sh plots them), --track prints the position
+// of a body a scene named (World::name) each second. The run itself is GameRun.h's runScene.
 // Exit status: 0 when every scene held together (and for --list, --help), 1 when one blew up (NaN, energy
 // growth, deep penetration), 2 on bad arguments.
-#include "GameDesign.h"
+#include "CsvLog.h"
+#include "GameRun.h"
 #include "Scenes.h"
-#include "iClock.h"
-#include "iContext.h"
-#include "iEngine.h"
-#include "iPhysicsScene.h"
 
 #include <cstdio>
 #include <cstdlib>
@@ -20,12 +20,21 @@
 namespace {
 
 const char* const kUsage =
-    "usage: ReferenceGame [--scene NAME|all] [--frames N] [--list] [--help]\n"
+    "usage: ReferenceGame [--scene NAME|all] [--frames N] [--csv FILE] [--csv-every N] [--track NAME]...\n"
+    "                     [--list] [--help]\n"
     "  --scene NAME|all  the scene to run, or every scene in turn (default: pyramid)\n"
     "  --frames N        frames per scene on a stepped 16 ms clock, N > 0 (default: 600, about 10 s)\n"
+    "  --csv FILE        also write the measurements as CSV to FILE: a header row, a row at t = 0 and one\n"
+    "                    with each summary line; with --scene all one file per scene, the scene's name\n"
+    "                    joined before .csv (runs.csv: runs-tower.csv, runs-pyramid.csv, ...)\n"
+    "  --csv-every N     a CSV row every N frames instead, N > 0 (1: every frame)\n"
+    "  --track NAME      print a body's position each second (and add x, y, z columns to the CSV): a name\n"
+    "                    the scene gave it (--list shows them) or its index; may be repeated\n"
     "  --list            name and describe the scenes, then exit\n"
     "  --help            print this and exit\n"
+    "Each second: t, awake/moving bodies (\"asleep\" when all sleep), contacts, KE, deepest overlap, hits.\n"
     "Each scene ends with \"OK <scene>\" or \"FAIL <scene>: <reason>\".\n"
+    "scripts/plot.sh CSV OUTDIR plots a --csv file.\n"
     "Exit status: 0 every scene held together, 1 a scene blew up, 2 bad arguments.\n";
 
 int usage() { // bad arguments
@@ -33,36 +42,23 @@ int usage() { // bad arguments
     return 2;
 }
 
-bool runScene(const SceneSpec& spec, int frames) {
-    iContext* context = CreateContext();
-    iPhysicsScene* scene = CreatePhysicsScene(context); // the course Engine makes it in its constructor
-    GameDesign* design = new GameDesign(scene, spec, frames);
-    iEngine* engine = CreateEngine(context, design, scene, CreateSteppedClock(16));
-    engine->setup();
-    engine->run(frames);
-    const char* failure = design->failure();
-    if (failure)
-        std::printf("FAIL %s: %s\n", spec.name, failure);
-    else
-        std::printf("OK %s\n", spec.name);
-    std::fflush(stdout);
-    bool ok = failure == nullptr;
-    engine->Delete(); // deletes the design, then the scene
-    context->Delete();
-    return ok;
-}
-
 } // namespace
 
 int main(int argc, char** argv) {
     std::string name = "pyramid";
-    int frames = 600;
+    GameOptions options;
     for (int i = 1; i < argc; ++i) {
         if (!std::strcmp(argv[i], "--scene") && i + 1 < argc) {
             name = argv[++i];
         } else if (!std::strcmp(argv[i], "--frames") && i + 1 < argc) {
-            frames = std::atoi(argv[++i]);
-            if (frames <= 0) return usage();
+            options.frames = std::atoi(argv[++i]);
+            if (options.frames <= 0) return usage();
+        } else if (!std::strcmp(argv[i], "--csv") && i + 1 < argc && *argv[i + 1]) { // CsvLog.h
+            options.csv = argv[++i];
+        } else if (!std::strcmp(argv[i], "--csv-every") && i + 1 < argc) {
+            if ((options.csvEvery = std::atoi(argv[++i])) <= 0) return usage();
+        } else if (!std::strcmp(argv[i], "--track") && i + 1 < argc && *argv[i + 1]) { // Tracking.h
+            options.track.push_back(argv[++i]);
         } else if (!std::strcmp(argv[i], "--help") || !std::strcmp(argv[i], "-h")) {
             std::fputs(kUsage, stdout);
             return 0;
@@ -73,14 +69,21 @@ int main(int argc, char** argv) {
             return usage();
         }
     }
-    bool ok = true;
+    if (options.csvEvery > 0 && options.csv.empty()) return usage(); // --csv-every without --csv
+    int status = RUN_OK;
     if (name == "all") {
-        for (const SceneSpec& s : allScenes()) ok = runScene(s, frames) && ok;
+        const std::string csv = options.csv;
+        for (const SceneSpec& s : allScenes()) {
+            if (!csv.empty()) options.csv = csvPathFor(csv, s.name);
+            int st = runScene(s, options);
+            if (st == RUN_BAD_ARGUMENTS) return st;
+            status = st > status ? st : status;
+        }
     } else if (const SceneSpec* s = findScene(name)) {
-        ok = runScene(*s, frames);
+        status = runScene(*s, options);
     } else {
         std::fprintf(stderr, "no scene '%s' (try --list)\n", name.c_str());
         return 2;
     }
-    return ok ? 0 : 1;
+    return status;
 }

@@ -1,19 +1,30 @@
 #!/usr/bin/env bash
 # Builds the reference game (Release) and runs it headless; arguments go to the game.
-# Usage: scripts/game.sh [--scene NAME|all] [--frames N] [--list] [--help]
+# Usage: scripts/game.sh [--scene NAME|all] [--frames N] [--csv FILE] [--csv-every N] [--track NAME]...
+#                       [--list] [--help]
+# (scripts/plot.sh CSV OUTDIR plots a --csv file.)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 for arg in "$@"; do
   if [ "$arg" = "--help" ] || [ "$arg" = "-h" ]; then
     cat <<'USAGE'
-usage: scripts/game.sh [--scene NAME|all] [--frames N] [--list] [--help]
+usage: scripts/game.sh [--scene NAME|all] [--frames N] [--csv FILE] [--csv-every N] [--track NAME]...
+                       [--list] [--help]
 Builds the reference game (Release, in build-release/) and runs it headless with these arguments
 (--help builds nothing):
   --scene NAME|all  the scene to run, or every scene in turn (default: pyramid)
   --frames N        frames per scene on a stepped 16 ms clock, N > 0 (default: 600, about 10 s)
+  --csv FILE        also write the measurements as CSV to FILE: a header row, a row at t = 0 and one
+                    with each summary line; with --scene all one file per scene, the scene's name
+                    joined before .csv (runs.csv: runs-tower.csv, runs-pyramid.csv, ...)
+  --csv-every N     a CSV row every N frames instead, N > 0 (1: every frame)
+  --track NAME      print a body's position each second (and add x, y, z columns to the CSV): a name
+                    the scene gave it (--list shows them) or its index; may be repeated
   --list            name and describe the scenes, then exit
   --help            print this and exit
+Each second: t, awake/moving bodies ("asleep" when all sleep), contacts, KE, deepest overlap, hits.
 Each scene ends with "OK <scene>" or "FAIL <scene>: <reason>".
+scripts/plot.sh CSV OUTDIR plots a --csv file.
 Exit status: 0 every scene held together, 1 a scene blew up, 2 bad arguments.
 USAGE
     exit 0

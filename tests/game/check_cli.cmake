@@ -1,7 +1,8 @@
 # The reference game's command line, as a new user meets it: --help prints usage and exits 0 (scripts/game.sh
 # --help too, building nothing, with the same options), bad arguments exit 2 with the usage on stderr, and a
-# scene ends with its verdict line "OK <scene>".
-# Run as: cmake -DGAME=<ReferenceGame> -DROOT=<source dir> -P check_cli.cmake
+# scene ends with its verdict line "OK <scene>"; --csv writes its file (one per scene with --scene all),
+# --track prints its body each second, and scripts/plot.sh turns a CSV into PNGs (when gnuplot is installed).
+# Run as: cmake -DGAME=<ReferenceGame> -DROOT=<source dir> -DWORK=<scratch dir> -P check_cli.cmake
 cmake_minimum_required(VERSION 3.20)
 
 function(run out_rc out_stdout out_stderr)
@@ -23,9 +24,13 @@ if(NOT rc EQUAL 0 OR NOT out MATCHES "usage: ReferenceGame")
 endif()
 option_lines(game_options "${out}")
 
-foreach(bad "--bogus" "--frames;0" "--frames;x" "--scene" "--scene;nosuch")
+file(REMOVE_RECURSE "${WORK}")
+file(MAKE_DIRECTORY "${WORK}")
+foreach(bad "--bogus" "--frames;0" "--frames;x" "--scene" "--scene;nosuch" "--csv" "--csv-every" "--csv-every;0"
+            "--csv-every;x" "--csv;${WORK}/a.csv;--csv-every;-3" "--csv-every;5" "--track"
+            "--scene;cradle;--csv;${WORK}/no/such/dir/x.csv")
   run(rc out err "${GAME}" ${bad})
-  if(NOT rc EQUAL 2 OR NOT err MATCHES "usage: ReferenceGame|no scene")
+  if(NOT rc EQUAL 2 OR NOT err MATCHES "usage: ReferenceGame|no scene|cannot write")
     message(FATAL_ERROR "ReferenceGame ${bad}: exit ${rc} (want 2), stderr:\n${err}")
   endif()
 endforeach()
@@ -33,6 +38,53 @@ endforeach()
 run(rc out err "${GAME}" --scene cradle --frames 30)
 if(NOT rc EQUAL 0 OR NOT out MATCHES "\nOK cradle\n$")
   message(FATAL_ERROR "ReferenceGame --scene cradle: exit ${rc}, want a last line \"OK cradle\":\n${out}")
+endif()
+
+# --csv and --track: a header, a row at t = 0 and one per summary line (1.008 s and the last frame, 1.12 s);
+# the tracked ball's line under each summary line.
+run(rc out err "${GAME}" --scene cradle --frames 70 --csv "${WORK}/cradle.csv" --track cue --track 4)
+if(NOT rc EQUAL 0 OR NOT EXISTS "${WORK}/cradle.csv")
+  message(FATAL_ERROR "ReferenceGame --csv: exit ${rc}, no ${WORK}/cradle.csv:\n${out}\n${err}")
+endif()
+file(STRINGS "${WORK}/cradle.csv" rows)
+list(LENGTH rows n)
+list(GET rows 0 header)
+if(NOT n EQUAL 4 OR NOT header MATCHES "^time_s,sim_time_s,frame,kinetic_energy_J,.*,cue_y_m,.*,4_z_m,ms_per_frame$")
+  message(FATAL_ERROR "ReferenceGame --csv: want a header and 3 rows, got ${n} lines:\n${rows}")
+endif()
+string(REGEX MATCHALL "\n  track cue +pos \\( *[-0-9.]+, +[-0-9.]+, +[-0-9.]+\\) m" tracks "${out}")
+list(LENGTH tracks n)
+if(NOT n EQUAL 2 OR NOT out MATCHES "\n  track 4 +pos")
+  message(FATAL_ERROR "ReferenceGame --track cue: want 2 lines \"  track cue  pos (x, y, z) m\":\n${out}")
+endif()
+
+# --scene all --csv FILE: one file per scene, FILE's name with the scene's joined before .csv.
+run(rc out err "${GAME}" --scene all --frames 2 --csv "${WORK}/runs.csv")
+foreach(scene tower pyramid ballpit dominoes cradle shooting)
+  if(NOT rc EQUAL 0 OR NOT EXISTS "${WORK}/runs-${scene}.csv")
+    message(FATAL_ERROR "ReferenceGame --scene all --csv runs.csv: exit ${rc}, no runs-${scene}.csv:\n${err}")
+  endif()
+endforeach()
+
+# scripts/plot.sh: bad arguments exit 2 with its usage; with gnuplot, four PNG files from the cradle's CSV.
+run(rc out err "${ROOT}/scripts/plot.sh")
+if(NOT rc EQUAL 2 OR NOT err MATCHES "usage: scripts/plot.sh")
+  message(FATAL_ERROR "scripts/plot.sh without arguments: exit ${rc} (want 2), stderr:\n${err}")
+endif()
+run(rc out err "${ROOT}/scripts/plot.sh" "${WORK}/nosuch.csv" "${WORK}/plots")
+if(NOT rc EQUAL 2)
+  message(FATAL_ERROR "scripts/plot.sh on a missing CSV: exit ${rc} (want 2), stderr:\n${err}")
+endif()
+find_program(GNUPLOT gnuplot)
+if(GNUPLOT)
+  run(rc out err "${ROOT}/scripts/plot.sh" "${WORK}/cradle.csv" "${WORK}/plots")
+  foreach(png cradle cradle-kinetic cradle-awake cradle-overlap)
+    if(NOT rc EQUAL 0 OR NOT EXISTS "${WORK}/plots/${png}.png")
+      message(FATAL_ERROR "scripts/plot.sh: exit ${rc}, no ${png}.png:\n${out}\n${err}")
+    endif()
+  endforeach()
+else()
+  message(STATUS "gnuplot not installed: scripts/plot.sh's plotting not checked")
 endif()
 
 run(rc out err "${ROOT}/scripts/game.sh" --help)
