@@ -43,6 +43,7 @@ bool SimpleCollisionSpace::add(iCollisionGeometry* o) {
     g->setSpace(this);
     g->spaceState() = CollisionGeometry::SpaceState();
     g->spaceState().order = ++m_joined;
+    ++m_membership;
     return true;
 }
 
@@ -64,6 +65,7 @@ void SimpleCollisionSpace::remove(iCollisionGeometry* o) {
 }
 
 void SimpleCollisionSpace::removeNow(CollisionGeometry* g) {
+    ++m_membership;
     m_geometry.remove(g->asInterface());
     m_members.erase(std::find(m_members.begin(), m_members.end(), g));
     m_broadphase->forget(g);

@@ -26,6 +26,7 @@
 #include "iContactBudget.h"
 #include "iContactFeatures.h"
 #include "iShapeCast.h"
+#include "iSnapshots.h"
 
 #include <cstdint>
 #include <list>
@@ -42,7 +43,8 @@ class SimpleCollisionSpace final : public iCollisionSpace,
                                    public iContactFeatures,
                                    public iCollisionEvents,
                                    public iContactBudget,
-                                   public iShapeCast {
+                                   public iShapeCast,
+                                   public iSnapshots {
 public:
     SimpleCollisionSpace(size_t samplesPerSecond, std::unique_ptr<Broadphase> broadphase);
 
@@ -66,6 +68,9 @@ public:
                       std::vector<iCollisionGeometry*>& out) override;
     size_t overlapAABB(const Vector& min, const Vector& max, std::vector<iCollisionGeometry*>& out) override;
     void holdEvents(bool hold) override { m_holdEvents = hold; }
+    // SpaceSnapshot.cpp
+    iSnapshot* takeSnapshot() const override;
+    bool restoreSnapshot(const iSnapshot* s) override;
     void deliverEvents() override; // SpaceEvents.cpp
     bool setContactBudget(size_t maxContacts) override;
     size_t getContactBudget() const override { return m_budget; }
@@ -163,7 +168,8 @@ private:
     bool m_cut = false; // the pair being tested lost contacts to the budget
     size_t m_samplesPerSecond;
     std::unique_ptr<Broadphase> m_broadphase;
-    unsigned long long m_joined = 0; // geometries added so far (SpaceState::order)
+    unsigned long long m_joined = 0;     // geometries added so far (SpaceState::order)
+    unsigned long long m_membership = 0; // changes with every geometry added or removed (snapshots)
     std::list<iCollisionGeometry*> m_geometry;
     std::vector<CollisionGeometry*> m_members; // the same geometry in the same order, without a cast each
     std::vector<CollisionContact> m_contacts;

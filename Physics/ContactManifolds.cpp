@@ -174,6 +174,13 @@ void ContactSolver::matchPreviousImpulses() {
     }
 }
 
+void ContactSolver::setMemory(const Memory& memory) {
+    m_manifolds = memory.last;
+    storeImpulses(); // indexes them as last step's
+    m_maxDepthBefore = memory.depthBefore;
+    m_maxDepthAfter = memory.depthAfter;
+}
+
 // This step's manifolds become last step's, moved rather than copied (every one has a point).
 void ContactSolver::storeImpulses() {
     m_last.swap(m_manifolds);

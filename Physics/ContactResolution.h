@@ -71,6 +71,15 @@ public:
     // (resolveContacts zeroes the rest time of a body still being pushed out of an overlap.)
     void updateSleep(const std::vector<RigidBody*>& bodies, float dt);
 
+    // What the next step reads of the last (snapshots): the poses of the bodies outside the islands.
+    struct Pose {
+        Vector position;
+        Matrix orientation;
+    };
+    using Memory = FlatMap<const RBDynamics*, Pose>;
+    const Memory& memory() const { return m_outsiders; }
+    void setMemory(const Memory& m) { m_outsiders = m; }
+
     static constexpr float kSleepSpeed = 0.05f; // m/s and rad/s
     static constexpr float kTimeToSleep = 0.5f; // s
 
@@ -78,10 +87,6 @@ private:
     int find(int i) const;
     // Whether a body outside the islands moves; records its pose for the next step's question.
     bool outsiderMoves(const RBDynamics& d);
-    struct Pose {
-        Vector position;
-        Matrix orientation;
-    };
     FlatMap<const RigidBody*, int> m_index;
     mutable std::vector<int> m_parent;
     std::vector<char> m_pushed; // per island member: touched by a moving outsider

@@ -102,6 +102,13 @@ public:
 
     // Forgets last step's impulses (no warm start next step).
     void clear();
+    // What the next step reads of the last (snapshots): its manifolds with their impulses, and its overlaps.
+    struct Memory {
+        std::vector<Manifold> last;
+        float depthBefore = 0, depthAfter = 0;
+    };
+    Memory memory() const { return Memory{m_last, m_maxDepthBefore, m_maxDepthAfter}; }
+    void setMemory(const Memory& m);
 
     // Deepest overlap reported to the last solve / left after it.
     float maxPenetrationBefore() const { return m_maxDepthBefore; }

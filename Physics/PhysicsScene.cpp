@@ -56,6 +56,7 @@ bool PhysicsScene::add(iRigidBody* o) {
     }
     m_bodies.push_back(b);
     m_byDynamics[&b->getDynamics()] = b;
+    ++m_membership;
     b->setScene(this);
     return true;
 }

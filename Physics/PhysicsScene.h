@@ -17,6 +17,7 @@
 #include "iPhysicsSceneProfile.h"
 #include "iPhysicsSceneSettings.h"
 #include "iPhysicsSceneStats.h"
+#include "iSnapshots.h"
 
 #include <cstdint>
 #include <unordered_map>
@@ -30,7 +31,8 @@ class PhysicsScene final : public iPhysicsScene,
                            public iPhysicsSceneSettings,
                            public iPhysicsSceneHooks,
                            public iPhysicsSceneStats,
-                           public iPhysicsSceneProfile {
+                           public iPhysicsSceneProfile,
+                           public iSnapshots {
 public:
     PhysicsScene();
     PhysicsScene(const PhysicsScene&) = delete;
@@ -77,6 +79,9 @@ public:
     float getMaxPenetration() const override { return m_solver.maxPenetrationBefore(); }
     float getRemainingPenetration() const override { return m_solver.maxPenetrationAfter(); }
     const PhysicsProfile& getProfile() const override { return m_profiler.profile(); }
+    // --- iSnapshots (SceneSnapshot.cpp) ---
+    iSnapshot* takeSnapshot() const override;
+    bool restoreSnapshot(const iSnapshot* s) override;
 
     // --- the bodies' side ---
     bool busy() const { return m_busy; } // inside update(): removals and deletions are deferred
@@ -115,7 +120,8 @@ private:
     std::vector<iFixedUpdater*> m_updaters;      // nullptr: removed during a step, compacted after it
     std::vector<PhysicsScene*> m_deferredScenes; // deleted from callbacks of this scene's update
     iCollisionSpace* m_space = nullptr;
-    unsigned m_spaceVersion = 0; // changes whenever m_space does (its contact list is then gone)
+    unsigned m_spaceVersion = 0;         // changes whenever m_space does (its contact list is then gone)
+    unsigned long long m_membership = 0; // changes whenever a body joins or leaves (snapshots)
 
     Vector m_gravity = Vector(0, -9.81f, 0);
     int m_stepRate = 60;

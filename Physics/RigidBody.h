@@ -130,6 +130,23 @@ public:
     float compositeMass = 0;
     Mat3 compositeInertia = Mat3::Zero();
 
+    // Everything of the body a step reads, for snapshots (SceneSnapshot.cpp): saved and put back whole.
+    struct Saved {
+        RBDynamics dyn, lastValid;
+        bool sleeping;
+        unsigned teleports;
+        Vector prevPosition, stepPosition, projectedBy, writtenOmega, writtenMomentum;
+        Quat prevRotation, rotation;
+        Matrix stepOrientation, writtenOrientation;
+        Vec3 forceDv, forceDw;
+        float restTime, compositeMass;
+        bool hasComposite;
+        Mat3 compositeInertia;
+    };
+    Saved save() const;
+    // Puts s back; the frame is then to be written again (the scene's writeFrames), as after a step.
+    void load(const Saved& s);
+
 private:
     ~RigidBody();
     void bindFrame(iFrame* o); // sets m_frame, keeping the index of bindings frameDeleted reads

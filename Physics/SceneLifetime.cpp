@@ -88,6 +88,7 @@ void PhysicsScene::endSteps() {
 
 void PhysicsScene::forget(RigidBody* b) {
     b->setAsleep(false); // out of the scene, nobody would wake it
+    ++m_membership;
     m_bodies.erase(std::remove(m_bodies.begin(), m_bodies.end(), b), m_bodies.end());
     m_byDynamics.erase(&b->getDynamics());
     m_deferredDeletes.erase(std::remove(m_deferredDeletes.begin(), m_deferredDeletes.end(), b),

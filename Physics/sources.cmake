@@ -12,7 +12,7 @@ set(GUARDIAN_PHYSICS_SOURCES
   Integrators.cpp
   PhysicsFrame.cpp
   PhysicsScene.cpp
-  PhysicsSceneContacts.cpp
+  PhysicsSceneContacts.cpp SceneSnapshot.cpp
   SceneLifetime.cpp
   WorldPoseCache.cpp
   RigidBody.cpp
