@@ -11,6 +11,7 @@
 #include "ContactResolution.h"
 #include "ContactSolver.h"
 #include "ContinuousStage.h"
+#include "iDebugDrawable.h"
 #include "iPhysicsScene.h"
 #include "iPhysicsSceneHooks.h"
 #include "iPhysicsSceneSettings.h"
@@ -27,7 +28,8 @@ class RigidBody;
 class PhysicsScene final : public iPhysicsScene,
                            public iPhysicsSceneSettings,
                            public iPhysicsSceneHooks,
-                           public iPhysicsSceneStats {
+                           public iPhysicsSceneStats,
+                           public iDebugDrawable {
 public:
     PhysicsScene();
     PhysicsScene(const PhysicsScene&) = delete;
@@ -73,6 +75,9 @@ public:
     size_t getAwakeBodyCount() const override;
     float getMaxPenetration() const override { return m_solver.maxPenetrationBefore(); }
     float getRemainingPenetration() const override { return m_solver.maxPenetrationAfter(); }
+
+    // --- iDebugDrawable (SceneDebugDraw.cpp): the space's drawing, then the bodies' ---
+    void debugDraw(iDebugDraw& out, unsigned flags) const override;
 
     // --- the bodies' side ---
     bool busy() const { return m_busy; } // inside update(): removals and deletions are deferred
