@@ -1,9 +1,11 @@
 // GameDesign.cpp - scene building, hit counting, the per-second summary and the blow-up checks.
 #include "GameDesign.h"
 
+#include "SvgDebugDraw.h"
 #include "World.h"
 #include "iCollisionListener.h"
 #include "iCollisionSpace.h"
+#include "iDebugDrawable.h"
 #include "iPhysicsFrame.h"
 #include "iPhysicsScene.h"
 #include "iPhysicsSceneStats.h"
@@ -67,6 +69,7 @@ void GameDesign::update(int now) {
         m_lastSecond = second;
         summarise(now);
     }
+    if (!m_imageDir.empty() && (m_frame % m_imageEvery == 0 || finished())) writeImage();
     if (m_failure) std::printf("BLEW UP at %.3f s: %s\n", (now - m_start) / 1000.0, m_failure);
 }
 
@@ -82,4 +85,17 @@ void GameDesign::summarise(int now) {
                 (now - m_start) / 1000.0, statsOf(m_scene)->getBodyCount(),
                 statsOf(m_scene)->getAwakeBodyCount(), m_world->space()->getNumContacts(),
                 m_world->kineticEnergy(), m_worstPenetration, m_hits->hits, perFrame);
+}
+
+void GameDesign::writeImage() {
+    SvgDebugDraw picture;
+    if (const iDebugDrawable* drawable = debugDrawOf(m_scene))
+        drawable->debugDraw(picture, DEBUGDRAW_Default);
+    char name[64];
+    std::snprintf(name, sizeof name, "_%05d.svg", m_frame);
+    const std::string path = m_imageDir + "/" + m_spec.name + name;
+    if (!picture.write(path)) {
+        std::fprintf(stderr, "cannot write %s\n", path.c_str());
+        if (!m_failure) m_failure = "cannot write an image";
+    }
 }

@@ -23,7 +23,7 @@ if(NOT rc EQUAL 0 OR NOT out MATCHES "usage: ReferenceGame")
 endif()
 option_lines(game_options "${out}")
 
-foreach(bad "--bogus" "--frames;0" "--frames;x" "--scene" "--scene;nosuch")
+foreach(bad "--bogus" "--frames;0" "--frames;x" "--scene" "--scene;nosuch" "--image" "--image-every;0")
   run(rc out err "${GAME}" ${bad})
   if(NOT rc EQUAL 2 OR NOT err MATCHES "usage: ReferenceGame|no scene")
     message(FATAL_ERROR "ReferenceGame ${bad}: exit ${rc} (want 2), stderr:\n${err}")
