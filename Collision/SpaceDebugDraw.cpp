@@ -32,29 +32,39 @@ Matrix spaceDrawBoxRotation(const gcol::BoxShape& b) {
                   b.axis[2].x, b.axis[2].y, b.axis[2].z, 0, 0, 0, 0, 1);
 }
 
-// A square grid in the plane, centred where the plane is closest to the middle of the rest of the scene
-// and large enough to lie under all of it; a short line along the normal shows the free side.
+// A grid in the plane under the rest of the scene (the scene's bounding box projected onto the plane, with
+// a margin), kDrawPlaneCells cells each way; a short line along the normal at its centre shows the free
+// side. With nothing else to see, a square around the point nearest the origin.
 void spaceDrawPlane(iDebugDraw& out, const gcol::PlaneShape& p, const gcol::Aabb& scene, bool sceneBounded,
                     DebugColour colour) {
     const Vector n = p.normal;
-    Vector middle, span;
-    if (sceneBounded) {
-        middle = (scene.min + scene.max) * 0.5f;
-        span = scene.max - scene.min;
-    }
-    const Vector centre = middle + n * (p.offset - dot(n, middle));
-    const float half = std::ceil(std::fmax(kDrawMinPlaneHalfSize, 0.55f * span.length()));
     // Tangents: x projected into the plane unless the normal is close to x (then y).
     const Vector pick = std::fabs(n.x) < 0.9f ? Vector(1, 0, 0) : Vector(0, 1, 0);
     const Vector u = (pick - n * dot(pick, n)).normalize();
     const Vector v = cross(n, u);
-    const float cell = 2.0f * half / float(kDrawPlaneCells);
-    for (int i = 0; i <= kDrawPlaneCells; ++i) {
-        const float t = -half + cell * float(i);
-        out.drawLine(centre + u * t - v * half, centre + u * t + v * half, colour);
-        out.drawLine(centre + v * t - u * half, centre + v * t + u * half, colour);
+    float lo[2] = {0, 0}, hi[2] = {0, 0}; // the scene's extent along u and v
+    for (int i = 0; sceneBounded && i < 8; ++i) {
+        const Vector corner(i & 1 ? scene.max.x : scene.min.x, i & 2 ? scene.max.y : scene.min.y,
+                            i & 4 ? scene.max.z : scene.min.z);
+        const float a = dot(corner, u), b = dot(corner, v);
+        lo[0] = i ? std::fmin(lo[0], a) : a, hi[0] = i ? std::fmax(hi[0], a) : a;
+        lo[1] = i ? std::fmin(lo[1], b) : b, hi[1] = i ? std::fmax(hi[1], b) : b;
     }
-    out.drawLine(centre, centre + n * cell, colour);
+    const float margin = std::fmax(1.0f, 0.1f * std::fmax(hi[0] - lo[0], hi[1] - lo[1]));
+    float half[2], mid[2];
+    for (int k = 0; k < 2; ++k) {
+        mid[k] = 0.5f * (lo[k] + hi[k]);
+        half[k] = std::ceil(std::fmax(kDrawMinPlaneHalfSize, 0.5f * (hi[k] - lo[k]) + margin));
+    }
+    const Vector centre = u * mid[0] + v * mid[1] + n * p.offset; // u, v, n are orthonormal
+    const float cellU = 2.0f * half[0] / float(kDrawPlaneCells),
+                cellV = 2.0f * half[1] / float(kDrawPlaneCells);
+    for (int i = 0; i <= kDrawPlaneCells; ++i) {
+        const float a = -half[0] + cellU * float(i), b = -half[1] + cellV * float(i);
+        out.drawLine(centre + u * a - v * half[1], centre + u * a + v * half[1], colour);
+        out.drawLine(centre + v * b - u * half[0], centre + v * b + u * half[0], colour);
+    }
+    out.drawLine(centre, centre + n * std::fmin(cellU, cellV), colour);
 }
 
 // Grows bounds (empty while bounded is false) to hold box.
