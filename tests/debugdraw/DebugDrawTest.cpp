@@ -17,6 +17,7 @@
 
 #include <cmath>
 #include <iterator>
+#include <list>
 #include <map>
 #include <string>
 #include <vector>
@@ -87,6 +88,20 @@ struct Scene {
     }
 };
 
+// A game's own space: the seed's interface only.
+struct StandInSpace final : iCollisionSpace {
+    std::list<iCollisionGeometry*> none;
+    bool add(iCollisionGeometry*) override { return false; }
+    void remove(iCollisionGeometry*) override {}
+    const std::list<iCollisionGeometry*>& getAttachedGeometry() override { return none; }
+    void populateContactList(float) override {}
+    const CollisionContact* getContactList() const override { return nullptr; }
+    size_t getNumContacts() const override { return 0; }
+    void suspend() const override {}
+    void release() const override {}
+    void Delete() const override {}
+};
+
 TEST(DebugDraw, SpaceAndSceneCanDrawAndAGamesStandInCannot) {
     Scene s;
     EXPECT_NE(debugDrawOf(s.scene), nullptr);
@@ -94,6 +109,8 @@ TEST(DebugDraw, SpaceAndSceneCanDrawAndAGamesStandInCannot) {
     iCollisionSpace* octree = CreateOctreeCollisionSpace();
     EXPECT_NE(debugDrawOf(octree), nullptr);
     octree->Delete();
+    const StandInSpace standIn;
+    EXPECT_EQ(debugDrawOf(static_cast<const iCollisionSpace*>(&standIn)), nullptr);
     EXPECT_EQ(debugDrawOf(static_cast<const iCollisionSpace*>(nullptr)), nullptr);
 }
 
