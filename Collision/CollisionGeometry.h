@@ -55,6 +55,7 @@ public:
         Matrix previousRotation = Matrix(1);
     };
     SpaceState& spaceState() { return m_state; }
+    const SpaceState& spaceState() const { return m_state; }
     void setSpace(iCollisionSpace* s) { m_space = s; }
     iCollisionSpace* space() const { return m_space; }
     iRigidBody* body() const { return m_body; }

@@ -25,6 +25,7 @@
 #include "iCollisionSpace.h"
 #include "iContactBudget.h"
 #include "iContactFeatures.h"
+#include "iDebugDrawable.h"
 #include "iShapeCast.h"
 #include "iSnapshots.h"
 
@@ -44,7 +45,8 @@ class SimpleCollisionSpace final : public iCollisionSpace,
                                    public iCollisionEvents,
                                    public iContactBudget,
                                    public iShapeCast,
-                                   public iSnapshots {
+                                   public iSnapshots,
+                                   public iDebugDrawable {
 public:
     SimpleCollisionSpace(size_t samplesPerSecond, std::unique_ptr<Broadphase> broadphase);
 
@@ -76,6 +78,8 @@ public:
     size_t getContactBudget() const override { return m_budget; }
     size_t getDroppedPairCount() const override { return m_droppedPairs; }
     size_t sweepBodies(BodySweep* sweeps, size_t count) override; // SpaceShapeCast.cpp
+    // Geometry, bounds and the current contact list (SpaceDebugDraw.cpp).
+    void debugDraw(iDebugDraw& out, unsigned flags) const override;
     void suspend() const override {}
     void release() const override {}
     // Geometries are not deleted: they leave the space (and stay usable). Clears the default space if it

@@ -3,7 +3,8 @@ set(GUARDIAN_COLLISION_SOURCES
   CollideSphereSphere.cpp CollideSphereBox.cpp CollideBoxBox.cpp CollidePlane.cpp Dispatch.cpp Queries.cpp
   CollisionGeometry.cpp CSphere.cpp COBB.cpp CPlane.cpp CCompound.cpp
   SimpleCollisionSpace.cpp ContinuousPairTest.cpp SpaceListeners.cpp SpaceEvents.cpp SpaceQueries.cpp
-  SeparationBound.cpp SpaceShapeCast.cpp SpaceSnapshot.cpp DynamicTree.cpp SweepAndPrune.cpp TreeBroadphase.cpp)
+  SeparationBound.cpp SpaceShapeCast.cpp SpaceSnapshot.cpp DynamicTree.cpp SweepAndPrune.cpp TreeBroadphase.cpp
+  SpaceDebugDraw.cpp)
 set(GUARDIAN_COLLISION_HEADERS
   Shapes.h Narrowphase.h ManifoldReduce.h CollisionGeometry.h SimpleCollisionSpace.h Broadphase.h
   DynamicTree.h SweepAndPrune.h TreeBroadphase.h)

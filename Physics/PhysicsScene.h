@@ -12,6 +12,7 @@
 #include "ContactSolver.h"
 #include "ContinuousStage.h"
 #include "StepProfiler.h"
+#include "iDebugDrawable.h"
 #include "iPhysicsScene.h"
 #include "iPhysicsSceneHooks.h"
 #include "iPhysicsSceneProfile.h"
@@ -32,7 +33,8 @@ class PhysicsScene final : public iPhysicsScene,
                            public iPhysicsSceneHooks,
                            public iPhysicsSceneStats,
                            public iPhysicsSceneProfile,
-                           public iSnapshots {
+                           public iSnapshots,
+                           public iDebugDrawable {
 public:
     PhysicsScene();
     PhysicsScene(const PhysicsScene&) = delete;
@@ -82,6 +84,9 @@ public:
     // --- iSnapshots (SceneSnapshot.cpp) ---
     iSnapshot* takeSnapshot() const override;
     bool restoreSnapshot(const iSnapshot* s) override;
+
+    // --- iDebugDrawable (SceneDebugDraw.cpp): the space's drawing, then the bodies' ---
+    void debugDraw(iDebugDraw& out, unsigned flags) const override;
 
     // --- the bodies' side ---
     bool busy() const { return m_busy; } // inside update(): removals and deletions are deferred

@@ -16,6 +16,7 @@ set(GUARDIAN_PHYSICS_SOURCES
   SceneLifetime.cpp
   WorldPoseCache.cpp
   RigidBody.cpp
+  SceneDebugDraw.cpp
   ShockPropagation.cpp)
 set(GUARDIAN_PHYSICS_HEADERS
   BodyValidation.h

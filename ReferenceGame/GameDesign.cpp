@@ -3,11 +3,14 @@
 
 #include "CsvLog.h"
 #include "RBDynamics.h"
+#include "SvgDebugDraw.h"
 #include "World.h"
 #include "iCollisionListener.h"
 #include "iCollisionSpace.h"
+#include "iDebugDrawable.h"
 #include "iPhysicsFrame.h"
 #include "iPhysicsScene.h"
+#include "iPhysicsSceneProfile.h"
 #include "iPhysicsSceneSettings.h"
 #include "iPhysicsSceneStats.h"
 #include "iRigidBody.h"
@@ -83,6 +86,7 @@ void GameDesign::update(int now) {
             summarise(s);
         }
     }
+    if (!m_imageDir.empty() && (m_frame % m_imageEvery == 0 || finished())) writeImage();
     if (m_failure)
         std::fprintf(m_options.out, "BLEW UP at %.3f s: %s\n", (now - m_start) / 1000.0, m_failure);
 }
@@ -120,4 +124,33 @@ void GameDesign::summarise(const GameSample& s) {
                  s.time, s.awake, s.moving, s.allAsleep() ? " asleep" : "       ", s.contacts, s.kinetic,
                  s.worstOverlap, s.hits, perFrame);
     m_tracker.print(m_options.out);
+    if (m_options.profile) printProfile();
+}
+
+// Where the last update's step time went (its steps' sum), phase by phase, and what it worked on.
+void GameDesign::printProfile() const {
+    const iPhysicsSceneProfile* profile = profileOf(m_scene);
+    if (!profile) return;
+    const PhysicsProfile& p = profile->getProfile();
+    auto ms = [](double s) { return s * 1000.0; };
+    std::fprintf(m_options.out,
+                 "profile %d steps %.3f ms: updaters %.3f edits %.3f collision %.3f islands %.3f integration "
+                 "%.3f solver %.3f continuous %.3f sleeping %.3f events %.3f | bodies %zu awake %zu contacts "
+                 "%zu pairs %zu rows %zu\n",
+                 p.steps, ms(p.total), ms(p.updaters), ms(p.edits), ms(p.collision), ms(p.islands),
+                 ms(p.integration), ms(p.solver), ms(p.continuous), ms(p.sleeping), ms(p.events), p.bodies,
+                 p.awakeBodies, p.contacts, p.touchingPairs, p.solverRows);
+}
+
+void GameDesign::writeImage() {
+    SvgDebugDraw picture;
+    if (const iDebugDrawable* drawable = debugDrawOf(m_scene))
+        drawable->debugDraw(picture, DEBUGDRAW_Default);
+    char name[64];
+    std::snprintf(name, sizeof name, "_%05d.svg", m_frame);
+    const std::string path = m_imageDir + "/" + m_spec.name + name;
+    if (!picture.write(path)) {
+        std::fprintf(stderr, "cannot write %s\n", path.c_str());
+        if (!m_failure) m_failure = "cannot write an image";
+    }
 }

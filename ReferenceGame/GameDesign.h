@@ -9,6 +9,7 @@
 #include "iDesign.h"
 
 #include <chrono>
+#include <string>
 
 class CsvLog;
 class World;
@@ -27,6 +28,12 @@ public:
     bool finished() const override { return m_frame >= m_frames || m_failure; }
     void Delete() const override { delete this; }
 
+    // Writes the scene's debug drawing as dir/<scene>_<frame>.svg every `every` frames and at the last one.
+    void writeImages(const std::string& dir, int every) {
+        m_imageDir = dir;
+        m_imageEvery = every;
+    }
+
     // Why the scene failed, or nullptr when it held together.
     const char* failure() const { return m_failure; }
 
@@ -34,6 +41,8 @@ private:
     ~GameDesign();
     GameSample measure(int now, float penetration) const;
     void summarise(const GameSample& s);
+    void writeImage();
+    void printProfile() const;
 
     iPhysicsScene* m_scene;
     const SceneSpec& m_spec;
@@ -48,4 +57,6 @@ private:
     const char* m_failure = nullptr;
     std::chrono::steady_clock::time_point m_wallStart;
     int m_framesThisSecond = 0;
+    std::string m_imageDir; // empty: no pictures
+    int m_imageEvery = 60;
 };

@@ -17,6 +17,7 @@ RunStatus runScene(const SceneSpec& spec, const GameOptions& options) {
     iContext* context = CreateContext();
     iPhysicsScene* scene = CreatePhysicsScene(context); // the course Engine makes it in its constructor
     GameDesign* design = new GameDesign(scene, spec, options, options.csv.empty() ? nullptr : &csv);
+    if (!options.imageDir.empty()) design->writeImages(options.imageDir, options.imageEvery);
     iEngine* engine = CreateEngine(context, design, scene, CreateSteppedClock(16));
     engine->setup();
     engine->run(options.frames);

@@ -14,6 +14,9 @@ struct GameOptions {
     std::string csv;                // --csv: the CSV file to write ("" none; CsvLog.h)
     int csvEvery = 0;               // --csv-every: a CSV row every N frames; 0: with each summary line
     std::vector<std::string> track; // --track: body names (World::name) or indices, printed each second
+    std::string imageDir;           // --image: debug drawings as DIR/<scene>_<frame>.svg ("" none)
+    int imageEvery = 60;            // --image-every: a picture every N frames and at the last
+    bool profile = false;           // --profile: the step's phases under each summary line
     std::FILE* out = stdout;        // the summary, track and verdict lines
     std::FILE* err = stderr;        // notes (a tracked body a scene lacks, a CSV file that cannot be written)
 };

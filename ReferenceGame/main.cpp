@@ -2,10 +2,11 @@
 // design->update(now)) on a stepped 16 ms clock, for one named scene or all of them.
 //
 // Usage: ReferenceGame [--scene NAME|all] [--frames N] [--csv FILE] [--csv-every N] [--track NAME]...
-//                      [--list] [--help]
+//                      [--image DIR] [--image-every N] [--profile] [--list] [--help]
 // Each scene ends with a verdict line on stdout: "OK <scene>" or "FAIL <scene>: <reason>". --csv writes the
 // per-second measurements as CSV (CsvLog.h: columns; scripts/plot.sh plots them), --track prints the position
-// of a body a scene named (World::name) each second. The run itself is GameRun.h's runScene.
+// of a body a scene named (World::name) each second, --image writes debug drawings as SVG (SvgDebugDraw.h),
+// --profile prints where each second's step time went (iPhysicsSceneProfile.h). The run itself is GameRun.h's runScene.
 // Exit status: 0 when every scene held together (and for --list, --help), 1 when one blew up (NaN, energy
 // growth, deep penetration), 2 on bad arguments.
 #include "CsvLog.h"
@@ -21,7 +22,7 @@ namespace {
 
 const char* const kUsage =
     "usage: ReferenceGame [--scene NAME|all] [--frames N] [--csv FILE] [--csv-every N] [--track NAME]...\n"
-    "                     [--list] [--help]\n"
+    "                     [--image DIR] [--image-every N] [--profile] [--list] [--help]\n"
     "  --scene NAME|all  the scene to run, or every scene in turn (default: pyramid)\n"
     "  --frames N        frames per scene on a stepped 16 ms clock, N > 0 (default: 600, about 10 s)\n"
     "  --csv FILE        also write the measurements as CSV to FILE: a header row, a row at t = 0 and one\n"
@@ -30,6 +31,9 @@ const char* const kUsage =
     "  --csv-every N     a CSV row every N frames instead, N > 0 (1: every frame)\n"
     "  --track NAME      print a body's position each second (and add x, y, z columns to the CSV): a name\n"
     "                    the scene gave it (--list shows them) or its index; may be repeated\n"
+    "  --image DIR       write the scene's debug drawing as DIR/<scene>_<frame>.svg (DIR must exist)\n"
+    "  --image-every N   ... every N frames, N > 0, and at the last frame (default: 60)\n"
+    "  --profile         print each second where the last frame's step time went, phase by phase\n"
     "  --list            name and describe the scenes, then exit\n"
     "  --help            print this and exit\n"
     "Each second: t, awake/moving bodies (\"asleep\" when all sleep), contacts, KE, deepest overlap, hits.\n"
@@ -59,6 +63,12 @@ int main(int argc, char** argv) {
             if ((options.csvEvery = std::atoi(argv[++i])) <= 0) return usage();
         } else if (!std::strcmp(argv[i], "--track") && i + 1 < argc && *argv[i + 1]) { // Tracking.h
             options.track.push_back(argv[++i]);
+        } else if (!std::strcmp(argv[i], "--image") && i + 1 < argc && *argv[i + 1]) { // SvgDebugDraw.h
+            options.imageDir = argv[++i];
+        } else if (!std::strcmp(argv[i], "--image-every") && i + 1 < argc) {
+            if ((options.imageEvery = std::atoi(argv[++i])) <= 0) return usage();
+        } else if (!std::strcmp(argv[i], "--profile")) {
+            options.profile = true;
         } else if (!std::strcmp(argv[i], "--help") || !std::strcmp(argv[i], "-h")) {
             std::fputs(kUsage, stdout);
             return 0;

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Builds the reference game (Release) and runs it headless; arguments go to the game.
 # Usage: scripts/game.sh [--scene NAME|all] [--frames N] [--csv FILE] [--csv-every N] [--track NAME]...
-#                       [--list] [--help]
+#                       [--image DIR] [--image-every N] [--profile] [--list] [--help]
 # (scripts/plot.sh CSV OUTDIR plots a --csv file.)
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -9,7 +9,7 @@ for arg in "$@"; do
   if [ "$arg" = "--help" ] || [ "$arg" = "-h" ]; then
     cat <<'USAGE'
 usage: scripts/game.sh [--scene NAME|all] [--frames N] [--csv FILE] [--csv-every N] [--track NAME]...
-                       [--list] [--help]
+                       [--image DIR] [--image-every N] [--profile] [--list] [--help]
 Builds the reference game (Release, in build-release/) and runs it headless with these arguments
 (--help builds nothing):
   --scene NAME|all  the scene to run, or every scene in turn (default: pyramid)
@@ -20,6 +20,9 @@ Builds the reference game (Release, in build-release/) and runs it headless with
   --csv-every N     a CSV row every N frames instead, N > 0 (1: every frame)
   --track NAME      print a body's position each second (and add x, y, z columns to the CSV): a name
                     the scene gave it (--list shows them) or its index; may be repeated
+  --image DIR       write the scene's debug drawing as DIR/<scene>_<frame>.svg (DIR must exist)
+  --image-every N   ... every N frames, N > 0, and at the last frame (default: 60)
+  --profile         print each second where the last frame's step time went, phase by phase
   --list            name and describe the scenes, then exit
   --help            print this and exit
 Each second: t, awake/moving bodies ("asleep" when all sleep), contacts, KE, deepest overlap, hits.

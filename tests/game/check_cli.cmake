@@ -28,7 +28,7 @@ file(REMOVE_RECURSE "${WORK}")
 file(MAKE_DIRECTORY "${WORK}")
 foreach(bad "--bogus" "--frames;0" "--frames;x" "--scene" "--scene;nosuch" "--csv" "--csv-every" "--csv-every;0"
             "--csv-every;x" "--csv;${WORK}/a.csv;--csv-every;-3" "--csv-every;5" "--track"
-            "--scene;cradle;--csv;${WORK}/no/such/dir/x.csv")
+            "--scene;cradle;--csv;${WORK}/no/such/dir/x.csv" "--image" "--image-every;0")
   run(rc out err "${GAME}" ${bad})
   if(NOT rc EQUAL 2 OR NOT err MATCHES "usage: ReferenceGame|no scene|cannot write")
     message(FATAL_ERROR "ReferenceGame ${bad}: exit ${rc} (want 2), stderr:\n${err}")
