@@ -92,6 +92,7 @@ RunResult runRepeated(const SceneInfo& info, const Knobs& k, int runs) {
         total.seconds += r.seconds;
         total.steps += r.steps;
         total.dropped += r.dropped;
+        ++total.runs;
     }
     return total;
 }

@@ -10,8 +10,9 @@ namespace tradeoff {
 
 struct RunResult {
     double seconds = 0;    // wall time spent inside update() (steady clock)
-    long long steps = 0;   // fixed steps taken
-    long long dropped = 0; // steps dropped by the max-steps cap
+    int runs = 1;          // runs added up (runRepeated)
+    long long steps = 0;   // fixed steps taken, all runs
+    long long dropped = 0; // steps dropped by the max-steps cap, all runs
     int bodies = 0;        // moving bodies
     double error = 0;      // against the truth, in the scene's unit
     double nsPerBodyStep() const {

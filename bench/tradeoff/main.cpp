@@ -117,8 +117,9 @@ int main(int argc, char** argv) {
     for (size_t i = 0; i < rows.size(); ++i) {
         const Row& r = rows[i];
         char nums[256];
-        std::snprintf(nums, sizeof nums, "%d,%lld,%lld,%.1f,%.4f,%.6g", r.c.setting.bodies, r.c.setting.steps,
-                      r.c.setting.dropped, r.c.nsPerBodyStep, r.c.costRatio, r.c.setting.error);
+        std::snprintf(nums, sizeof nums, "%d,%lld,%lld,%.1f,%.4f,%.6g", r.c.setting.bodies,
+                      r.c.setting.steps / r.c.setting.runs, r.c.setting.dropped / r.c.setting.runs,
+                      r.c.nsPerBodyStep, r.c.costRatio, r.c.setting.error);
         csv << r.scene << "," << r.varied << "," << r.knobs << "," << nums << "," << r.unit << ","
             << (front[i] ? 1 : 0) << "\n";
     }
