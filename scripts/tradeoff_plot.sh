@@ -49,7 +49,7 @@ while IFS=$'\t' read -r scene unit; do
   } | gnuplot
 done < "$tmp/scenes"
 {
-  echo "set terminal pngcairo size 1800,1600 font ',9'"
+  echo "set terminal pngcairo size 1500,1300 font ',8'"
   echo "set output '$out/tradeoff-all.png'"
   echo "$common"
   echo "set multiplot layout 4,3"

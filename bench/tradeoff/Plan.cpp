@@ -71,7 +71,6 @@ std::vector<Setting> planFor(const SceneInfo& scene, bool quick) {
             for (int s : {0, 240, 1000}) p.add("samples_per_s", [=](Knobs& k) { k.samplesPerSecond = s; });
     }
     if (n == "drag_fall") p.add("drag_cd", [](Knobs& k) { k.drag = 0.0f; });
-    if (n == "projectile") p.add("drag_cd", [](Knobs& k) { k.drag = 0.0f; }); // a no-op: cost of nothing
     if (n == "slow_game") {
         for (int m : {1, 2, 4}) p.add("max_steps", [=](Knobs& k) { k.maxSteps = m; });
         for (int m : {4, 8, 16})
