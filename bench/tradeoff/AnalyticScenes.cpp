@@ -22,11 +22,11 @@
 namespace tradeoff {
 namespace {
 
-constexpr int kCopies = 64;
-constexpr float kSpacing = 10.0f;
+constexpr int kAnalyticCopies = 64;
+constexpr float kAnalyticSpacing = 10.0f;
 
 Vec3d toD(const Vector& v) { return {v.x, v.y, v.z}; }
-Vector start(int i) { return Vector(gridX(i, kSpacing), 0, gridZ(i, kSpacing)); }
+Vector start(int i) { return Vector(gridX(i, kAnalyticSpacing), 0, gridZ(i, kAnalyticSpacing)); }
 
 // A projectile thrown at (3, 8, 1) m/s; error: the largest |x - (x0 + v0 t + g t^2 / 2)| (m) over the
 // copies after the run. With truthAtEngineTime the truth is taken at the game's clock, not the steps
@@ -35,7 +35,8 @@ class Projectile final : public TrialScene {
 public:
     explicit Projectile(bool truthAtEngineTime) : m_engineTime(truthAtEngineTime) {}
     void build(World& w, const Knobs&) override {
-        for (int i = 0; i < kCopies; ++i) w.sphere(start(i), 0.1f, 1.0f)->getDynamics()->velocity = m_v0;
+        for (int i = 0; i < kAnalyticCopies; ++i)
+            w.sphere(start(i), 0.1f, 1.0f)->getDynamics()->velocity = m_v0;
     }
     double error(World& w, const Knobs&, double simTime, double engineTime) override {
         const double t = m_engineTime ? engineTime : simTime;
@@ -58,7 +59,7 @@ private:
 class DragFall final : public TrialScene {
 public:
     void build(World& w, const Knobs&) override {
-        for (int i = 0; i < kCopies; ++i) w.sphere(start(i), 0.1f, 1.0f);
+        for (int i = 0; i < kAnalyticCopies; ++i) w.sphere(start(i), 0.1f, 1.0f);
     }
     double error(World& w, const Knobs& k, double t, double) override {
         const double g = -settingsOf(w.scene())->getGravity().y;
@@ -101,7 +102,7 @@ class Central final : public TrialScene {
 public:
     explicit Central(bool orbit) : m_orbit(orbit) {}
     void build(World& w, const Knobs&) override {
-        for (int i = 0; i < kCopies; ++i) {
+        for (int i = 0; i < kAnalyticCopies; ++i) {
             iPhysicsFrame* f = w.sphere(start(i) + Vector(kRadius, 0, 0), 0.05f, 1.0f);
             RBDynamics* d = f->getDynamics();
             d->physicsType = PHYS_Floating;
@@ -137,7 +138,7 @@ private:
 class Top final : public TrialScene {
 public:
     void build(World& w, const Knobs&) override {
-        for (int i = 0; i < kCopies; ++i) {
+        for (int i = 0; i < kAnalyticCopies; ++i) {
             RBDynamics* d = w.box(start(i), Vector(kH[0], kH[1], kH[2]), 1.0f)->getDynamics();
             d->physicsType = PHYS_Floating;
             d->angularVelocity = Vector(float(kW.x), float(kW.y), float(kW.z));

@@ -18,7 +18,7 @@
 namespace tradeoff {
 namespace {
 
-constexpr float kSpacing = 4.0f;
+constexpr float kContactSpacing = 4.0f;
 constexpr float kPlaneFriction = 0.25f, kPlaneRestitution = 0.5f; // RBDynamics' defaults
 
 double gravity(World& w) { return -settingsOf(w.scene())->getGravity().y; }
@@ -30,7 +30,7 @@ public:
     void build(World& w, const Knobs&) override {
         w.ground();
         for (int i = 0; i < kCopies; ++i) {
-            w.sphere(Vector(gridX(i, kSpacing), kH + kR, gridZ(i, kSpacing)), kR, 1.0f)
+            w.sphere(Vector(gridX(i, kContactSpacing), kH + kR, gridZ(i, kContactSpacing)), kR, 1.0f)
                 ->getDynamics()
                 ->restitution = kE;
         }
@@ -70,7 +70,7 @@ public:
     void build(World& w, const Knobs&) override {
         w.ground();
         for (int i = 0; i < kCopies; ++i) {
-            const Vector at(gridX(i, kSpacing), 0.5f, gridZ(i, 2 * kSpacing));
+            const Vector at(gridX(i, kContactSpacing), 0.5f, gridZ(i, 2 * kContactSpacing));
             RBDynamics* d = m_roll ? w.sphere(at, 0.5f, 1.0f)->getDynamics()
                                    : w.box(at, Vector(0.5f, 0.5f, 0.5f), 1.0f)->getDynamics();
             d->friction = kFriction;
@@ -113,7 +113,7 @@ public:
             m_tops.push_back(w.bodies().size() - 1);
         } else {
             for (int t = 0; t < 4; ++t) {
-                for (int i = 0; i < 5; ++i) w.box(Vector(t * kSpacing, 0.5f + i, 0), half, 1.0f);
+                for (int i = 0; i < 5; ++i) w.box(Vector(t * kContactSpacing, 0.5f + i, 0), half, 1.0f);
                 m_tops.push_back(w.bodies().size() - 1);
             }
         }
@@ -139,7 +139,7 @@ class Tunnel final : public TrialScene {
 public:
     void build(World& w, const Knobs&) override {
         for (int i = 0; i < kCopies; ++i) {
-            const float z = float(i) * kSpacing;
+            const float z = float(i) * kContactSpacing;
             w.fixedBox(Vector(kFace + 0.05f, 0, z), Vector(0.05f, 1.0f, 1.0f));
             RBDynamics* d = w.sphere(Vector(0, 0, z), kR, 1.0f)->getDynamics();
             d->physicsType = PHYS_Floating;
