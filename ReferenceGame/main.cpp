@@ -6,9 +6,9 @@
 // Each scene ends with a verdict line on stdout: "OK <scene>" or "FAIL <scene>: <reason>". --csv writes the
 // per-second measurements as CSV (CsvLog.h: columns; scripts/plot.sh plots them), --track prints the position
 // of a body a scene named (World::name) each second, --image writes debug drawings as SVG (SvgDebugDraw.h),
-// --profile prints where each second's step time went (iPhysicsSceneProfile.h). The run itself is GameRun.h's runScene.
-// Exit status: 0 when every scene held together (and for --list, --help), 1 when one blew up (NaN, energy
-// growth, deep penetration), 2 on bad arguments.
+// --profile prints where each second's step time went (iPhysicsSceneProfile.h). The run itself is GameRun.h's
+// runScene. Exit status: 0 when every scene held together (and for --list, --help), 1 when one blew up (NaN,
+// energy growth, deep penetration), 2 on bad arguments.
 #include "CsvLog.h"
 #include "GameRun.h"
 #include "Scenes.h"
