@@ -13,6 +13,12 @@ struct RBDynamics;
 
 namespace physics {
 
+// Four floats, the last 0: a row's vectors in the solver's inner loop, one SSE register each (Eigen
+// vectorises fixed 4-float vectors; a Vec3's components are shuffled in and out one at a time).
+using Vec4 = Eigen::Vector4f;
+inline Vec4 wide(const Vec3& v) { return Vec4(v.x(), v.y(), v.z(), 0.0f); }
+inline Vec3 narrow(const Vec4& v) { return v.head<3>(); }
+
 // A body as the solver sees it: velocities about its (composite) centre of mass and its inverse mass
 // properties in world axes. Immovable bodies (fixed, infinite mass) have zero inverses but keep their
 // velocity, so a moving kinematic body pushes what it touches.
@@ -47,15 +53,17 @@ struct ContactPoint {
     Vec3 point = Vec3::Zero(); // the contact point (world) at the step's start, midway between the two
     Vec3 rA = Vec3::Zero(), rB = Vec3::Zero(); // from each centre of mass to the contact (world), once known
     float depth = 0; // overlap as the detector reported it (the four deepest are kept)
-    // The constraint rows, for the normal (0) and the two tangents (1, 2): r x direction on each body, and
-    // I^-1 (r x direction), how an impulse along the direction turns each body.
-    Vec3 armA[3] = {Vec3::Zero(), Vec3::Zero(), Vec3::Zero()},
-         armB[3] = {Vec3::Zero(), Vec3::Zero(), Vec3::Zero()};
-    Vec3 turnA[3] = {Vec3::Zero(), Vec3::Zero(), Vec3::Zero()},
-         turnB[3] = {Vec3::Zero(), Vec3::Zero(), Vec3::Zero()};
+    // The constraint rows, for the normal (0) and the two tangents (1, 2), 4-wide: the direction, r x
+    // direction on each body, and I^-1 (r x direction), how an impulse along the direction turns each body.
+    Vec4 dir[3] = {Vec4::Zero(), Vec4::Zero(), Vec4::Zero()};
+    Vec4 armA[3] = {Vec4::Zero(), Vec4::Zero(), Vec4::Zero()},
+         armB[3] = {Vec4::Zero(), Vec4::Zero(), Vec4::Zero()};
+    Vec4 turnA[3] = {Vec4::Zero(), Vec4::Zero(), Vec4::Zero()},
+         turnB[3] = {Vec4::Zero(), Vec4::Zero(), Vec4::Zero()};
     float normalMass = 0, tangentMass[2] = {0, 0};
     float normalImpulse = 0, tangentImpulse[2] = {0, 0}; // accumulated, per sub-step
     float solvedImpulse[3] = {0, 0, 0}; // normal and tangent impulses before the sub-step's push out
+    float gap = 0;                      // its separation at the sub-step's poses (the solve measures it)
     float approachSpeed = 0;            // v_n when the solve began (negative: approaching), for restitution
     float forceSpeed = 0;               // what this step's forces added to v_n (a_n dt)
     float touchSpeed2 = 0;              // v_n^2 at the moment the point touched (the energy a bounce returns)

@@ -29,7 +29,7 @@ namespace physics {
 
 // p's rows and approachSpeed (v_n after this step's forces) are set.
 void ContactSolver::prepareBounce(const SolverBody& a, const SolverBody& b, ContactPoint& p, float dt) {
-    p.forceSpeed = p.normal.dot(b.dv - a.dv) + p.armB[0].dot(b.dw) - p.armA[0].dot(a.dw);
+    p.forceSpeed = p.normal.dot(b.dv - a.dv) + narrow(p.armB[0]).dot(b.dw) - narrow(p.armA[0]).dot(a.dw);
     const float startSpeed = p.approachSpeed - 0.5f * p.forceSpeed;
     const float startSeparation = p.normal.dot(startPoint(b, p.anchorB) - startPoint(a, p.anchorA));
     const float accel = dt > 0.0f ? p.forceSpeed / dt : 0.0f;

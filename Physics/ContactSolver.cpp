@@ -117,7 +117,7 @@ void ContactSolver::solve(float dt, const SolverBodyAccess& access) {
         solveContacts(h, false); // the velocities: approach stopped, nothing pushed
         propagateShock(h);       // what a light body under a heavy one could not stop
         saveVelocities();
-        solveContacts(h, true);  // the push out, on top
+        solveContacts(h, true);  // the push out, on top (at the same poses: the gaps just measured)
         moveBodies(h);           // by the velocities plus the push, capped
         restoreVelocities();     // the push out's velocity is not kept
         solveContacts(h, false); // relax: the velocities again, at the new poses
@@ -143,12 +143,14 @@ void ContactSolver::prepare(float dt) {
             float masses[3];
             for (int row = 0; row < 3; ++row) {
                 const Vec3& d = row == 0 ? p.normal : p.tangent[row - 1];
-                p.armA[row] = p.rA.cross(d);
-                p.armB[row] = p.rB.cross(d);
-                p.turnA[row] = a.invInertia * p.armA[row];
-                p.turnB[row] = b.invInertia * p.armB[row];
-                float k =
-                    a.invMass + b.invMass + p.armA[row].dot(p.turnA[row]) + p.armB[row].dot(p.turnB[row]);
+                const Vec3 armA = p.rA.cross(d), armB = p.rB.cross(d);
+                const Vec3 turnA = a.invInertia * armA, turnB = b.invInertia * armB;
+                p.dir[row] = wide(d);
+                p.armA[row] = wide(armA);
+                p.armB[row] = wide(armB);
+                p.turnA[row] = wide(turnA);
+                p.turnB[row] = wide(turnB);
+                float k = a.invMass + b.invMass + armA.dot(turnA) + armB.dot(turnB);
                 masses[row] = k > 0.0f ? 1.0f / k : 0.0f;
             }
             p.normalMass = masses[0];
@@ -188,16 +190,18 @@ void ContactSolver::warmStart(bool firstSubstep) {
     const float impact = -m_settings.restitutionThreshold;
     for (Manifold& m : m_manifolds) {
         SolverBody &a = m_bodies[m.a], &b = m_bodies[m.b];
+        PairVelocity pair(a, b);
         for (int i = 0; i < m.count; ++i) {
             ContactPoint& p = m.points[i];
             if (!firstSubstep && p.approachSpeed < impact) {
                 p.normalImpulse = p.tangentImpulse[0] = p.tangentImpulse[1] = 0;
                 continue;
             }
-            applyImpulse<0>(a, b, p, p.normalImpulse);
-            applyImpulse<1>(a, b, p, p.tangentImpulse[0]);
-            applyImpulse<2>(a, b, p, p.tangentImpulse[1]);
+            pair.apply<0>(p, p.normalImpulse);
+            pair.apply<1>(p, p.tangentImpulse[0]);
+            pair.apply<2>(p, p.tangentImpulse[1]);
         }
+        pair.store(a, b);
     }
 }
 
@@ -216,57 +220,55 @@ void ContactSolver::solveContacts(float h, bool pushOut) {
 }
 
 void ContactSolver::solveManifold(Manifold& m, float h, bool pushOut) {
-    {
-        // Positions do not change within a sweep: each point's target is worked out once.
-        const SolverBody &a = m_bodies[m.a], &b = m_bodies[m.b];
-        Target target[4];
-        for (int i = 0; i < m.count; ++i) {
-            const ContactPoint& p = m.points[i];
-            float gap = separation(a, b, p);
-            if (gap > 0.0f) {
-                target[i].bias = gap / h; // apart: may close the gap within the sub-step, no more
-            } else if (gap > -m_settings.touchOverlap && p.approachSpeed < -m_settings.restitutionThreshold) {
-                // An impact at a touch (where the continuous stage leaves a fast body) is stopped rigidly:
-                // a soft stop lets a few % of the approach through, metres in a sub-step at 10^4 m/s. Also in
-                // the push-out pass, where the approach is already stopped: a soft target there relaxes the
-                // impact's accumulated impulse and lets the same few % through.
-            } else if (pushOut) {
-                target[i] = {std::max(m_biasRate * gap, -m_settings.maxPushSpeed), m_massScale,
-                             m_impulseScale};
-            }
+    SolverBody &a = m_bodies[m.a], &b = m_bodies[m.b];
+    // Positions do not change within a sweep, nor between the velocity sweep and the push out that follows
+    // it: each point's gap is measured once for both, and its target worked out once a sweep.
+    Target target[4];
+    for (int i = 0; i < m.count; ++i) {
+        ContactPoint& p = m.points[i];
+        if (!pushOut) p.gap = separation(a, b, p);
+        const float gap = p.gap;
+        if (gap > 0.0f) {
+            target[i].bias = gap / h; // apart: may close the gap within the sub-step, no more
+        } else if (gap > -m_settings.touchOverlap && p.approachSpeed < -m_settings.restitutionThreshold) {
+            // An impact at a touch (where the continuous stage leaves a fast body) is stopped rigidly: a
+            // soft stop lets a few % of the approach through, metres in a sub-step at 10^4 m/s. Also in the
+            // push-out pass, where the approach is already stopped: a soft target there relaxes the impact's
+            // accumulated impulse and lets the same few % through.
+        } else if (pushOut) {
+            target[i] = {std::max(m_biasRate * gap, -m_settings.maxPushSpeed), m_massScale, m_impulseScale};
         }
-        solveNormal(m, target);
-        solveNormal(m, target);
-        solveFriction(m);
-        solveNormal(m, target);
     }
+    PairVelocity pair(a, b);
+    solveNormal(m, target, pair);
+    solveNormal(m, target, pair);
+    solveFriction(m, pair);
+    solveNormal(m, target, pair);
+    pair.store(a, b);
 }
 
-void ContactSolver::solveNormal(Manifold& m, const Target* target) {
-    SolverBody &a = m_bodies[m.a], &b = m_bodies[m.b];
+GUARDIAN_HOT void ContactSolver::solveNormal(Manifold& m, const Target* target, PairVelocity& pair) {
     for (int i = 0; i < m.count; ++i) {
         ContactPoint& p = m.points[i];
         const Target& t = target[i];
-        float vn = relativeSpeed<0>(a, b, p);
+        float vn = pair.speed<0>(p);
         float change = -p.normalMass * t.massScale * (vn + t.bias) - t.impulseScale * p.normalImpulse;
         float total = std::max(0.0f, p.normalImpulse + change); // push only, never pull
-        applyImpulse<0>(a, b, p, total - p.normalImpulse);
+        pair.apply<0>(p, total - p.normalImpulse);
         p.normalImpulse = total;
         p.maxNormalImpulse = std::max(p.maxNormalImpulse, total);
     }
 }
 
-void ContactSolver::solveFriction(Manifold& m) {
-    SolverBody &a = m_bodies[m.a], &b = m_bodies[m.b];
+GUARDIAN_HOT void ContactSolver::solveFriction(Manifold& m, PairVelocity& pair) {
     for (int i = 0; i < m.count; ++i) {
         ContactPoint& p = m.points[i];
         const float limit = m.friction * p.normalImpulse; // Coulomb's cone as a box
-        float total =
-            std::clamp(p.tangentImpulse[0] - relativeSpeed<1>(a, b, p) * p.tangentMass[0], -limit, limit);
-        applyImpulse<1>(a, b, p, total - p.tangentImpulse[0]);
+        float total = std::clamp(p.tangentImpulse[0] - pair.speed<1>(p) * p.tangentMass[0], -limit, limit);
+        pair.apply<1>(p, total - p.tangentImpulse[0]);
         p.tangentImpulse[0] = total;
-        total = std::clamp(p.tangentImpulse[1] - relativeSpeed<2>(a, b, p) * p.tangentMass[1], -limit, limit);
-        applyImpulse<2>(a, b, p, total - p.tangentImpulse[1]);
+        total = std::clamp(p.tangentImpulse[1] - pair.speed<2>(p) * p.tangentMass[1], -limit, limit);
+        pair.apply<2>(p, total - p.tangentImpulse[1]);
         p.tangentImpulse[1] = total;
     }
 }

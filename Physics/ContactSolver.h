@@ -35,6 +35,8 @@ struct RBDynamics;
 
 namespace physics {
 
+struct PairVelocity; // SolverRows.h
+
 struct SolverSettings {
     int substeps = 4;                  // the iterations knob: each is a solve, a move and a relax
     float contactHertz = 100.0f;       // stiffness of the push out (capped at a quarter of the sub-step rate)
@@ -136,8 +138,8 @@ private:
     };
     void solveContacts(float h, bool pushOut);
     void solveManifold(Manifold& m, float h, bool pushOut);
-    void solveNormal(Manifold& m, const Target* target);
-    void solveFriction(Manifold& m);
+    void solveNormal(Manifold& m, const Target* target, PairVelocity& pair);
+    void solveFriction(Manifold& m, PairVelocity& pair);
     void saveVelocities();
     void moveBodies(float h);
     void restoreVelocities();

@@ -106,8 +106,8 @@ void ContactSolver::propagateShock(float h) {
                 const float gap = std::max(0.0f, separation(a, b, p));
                 const float vn = relativeSpeed<0>(a, b, p);
                 if (vn >= -gap / h) continue;
-                const Vec3& arm = upperIsB ? p.armB[0] : p.armA[0];
-                const Vec3& turn = upperIsB ? p.turnB[0] : p.turnA[0];
+                const Vec3 arm = narrow(upperIsB ? p.armB[0] : p.armA[0]);
+                const Vec3 turn = narrow(upperIsB ? p.turnB[0] : p.turnA[0]);
                 const float k = upper.invMass + arm.dot(turn);
                 if (!(k > 0.0f)) continue;
                 const float impulse = (-gap / h - vn) / k; // raises v_n to -gap / h
