@@ -41,7 +41,6 @@ bool RecordingWriter::open(const std::string& path) {
 
 void RecordingWriter::begin(const World& world, const char* scene) {
     if (!m_file) return;
-    m_world = &world;
     std::fprintf(m_file, "guardian-recording 1\nscene %s\nbodies %zu\n", scene, world.bodies().size());
     defineShapes(world);
 }
@@ -72,16 +71,13 @@ void RecordingWriter::defineShapes(const World& world) {
         m_listeners.back()->writer = this;
         m_listeners.back()->body = int(i);
         world.bodies()[i]->getRB()->attachListener(m_listeners.back().get());
+        m_index.emplace(world.bodies()[i]->getRB(), int(i));
     }
 }
 
 void RecordingWriter::Listener::HitWall(iRigidBody* other, Vector normal, Vector point) {
-    int otherIndex = -1;
-    if (other) {
-        const std::vector<iPhysicsFrame*>& bodies = writer->m_world->bodies();
-        for (size_t i = 0; i < bodies.size(); ++i)
-            if (bodies[i]->getRB() == other) otherIndex = int(i);
-    }
+    auto it = writer->m_index.find(other);
+    const int otherIndex = it == writer->m_index.end() ? -1 : it->second; // nullptr: a plane
     std::string line = "h " + std::to_string(body) + " " + std::to_string(otherIndex);
     recordVector(line, normal);
     recordVector(line, point);

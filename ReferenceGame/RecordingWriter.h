@@ -17,17 +17,17 @@
 //   frame F TIME_MS STEPS OVERLAP BODIES CONTACTS EVENTS
 //       F counts from 0 (the scene as built, before any update) by one; TIME_MS is the game clock since
 //       the start; STEPS physics steps taken so far; OVERLAP the deepest overlap the solver left (m); then
-//       how many body, contact and event lines follow, in that order.
+//       how many bodies, contacts and events the frame has. Their lines follow in that order.
 //   b STATE ORIGIN rot VELOCITY ANGULAR_VELOCITY ANGULAR_MOMENTUM     one per body, in body order
 //       STATE: A awake, S asleep, F fixed in space, Z fixed and marked asleep; ORIGIN the body frame's origin
 //       (World's bodies have their centre of mass there); velocities in m/s and rad/s, angular momentum in kg
 //       m^2/s (world axes).
 //   b =                                   the body's line is the same as in the previous frame
 //   c POINT NORMAL DEPTH                  a contact of the space's list (the normal points at its g2)
-//   c =                                   (alone) the contacts are the previous frame's, all of them
+//   c =                                   instead of all CONTACTS lines: the same as the previous frame's
 //   h BODY OTHER NORMAL POINT             a HitWall call this frame: the listening body, the one it hit (-1:
 //                                         a plane), the hit normal (towards OTHER) and point
-//   h =                                   (alone) the HitWall calls are the previous frame's, all of them
+//   h =                                   instead of all EVENTS lines: the same as the previous frame's
 // and last:
 //   end FRAMES OK                         the run's last frame number and verdict, or
 //   end FRAMES FAIL REASON...             (REASON: the rest of the line)
@@ -39,9 +39,11 @@
 #include <cstdio>
 #include <memory>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 class World;
+class iRigidBody;
 
 class RecordingWriter {
 public:
@@ -70,9 +72,9 @@ private:
     void writeBlock(std::string& block, std::string& last, const char* same);
 
     std::FILE* m_file = nullptr;
-    const World* m_world = nullptr;
     size_t m_shapesWritten = 0;
     std::vector<std::unique_ptr<Listener>> m_listeners; // one per body, in body order
+    std::unordered_map<const iRigidBody*, int> m_index; // each body's number
     std::vector<std::string> m_lastLine;                // each body's previous "b" line
     std::string m_events;                               // this frame's "h" lines so far
     std::string m_lastContacts, m_lastEvents;           // the previous frame's "c" and "h" lines
