@@ -7,16 +7,19 @@
 #include "iPhysicsFrame.h"
 #include "iRigidBody.h"
 
+#include <charconv>
 #include <initializer_list>
 
 namespace {
 
-// "%.9g" of a float reads back as the same float: the replay draws from exactly what was drawn live.
+// The shortest decimal that reads back as the same float (std::to_chars): the replay draws from exactly
+// what was drawn live, and it is several times faster than printf.
 void recordFloats(std::string& line, std::initializer_list<float> values) {
     char buffer[32];
     for (float v : values) {
-        std::snprintf(buffer, sizeof buffer, " %.9g", double(v));
-        line += buffer;
+        buffer[0] = ' ';
+        const std::to_chars_result r = std::to_chars(buffer + 1, buffer + sizeof buffer, v);
+        line.append(buffer, r.ptr);
     }
 }
 
@@ -91,8 +94,10 @@ void RecordingWriter::frame(const World& world, int frame, int timeMs, long long
     defineShapes(world);
     const iCollisionSpace* space = world.space();
     const size_t contacts = space->getNumContacts();
-    std::fprintf(m_file, "frame %d %d %lld %.9g %zu %zu %zu\n", frame, timeMs, steps, double(overlap),
-                 world.bodies().size(), contacts, m_eventCount);
+    std::string head =
+        "frame " + std::to_string(frame) + " " + std::to_string(timeMs) + " " + std::to_string(steps);
+    recordFloats(head, {overlap});
+    std::fprintf(m_file, "%s %zu %zu %zu\n", head.c_str(), world.bodies().size(), contacts, m_eventCount);
     m_lastLine.resize(world.bodies().size());
     for (size_t i = 0; i < world.bodies().size(); ++i) {
         const RBDynamics& d = *world.bodies()[i]->getDynamics();

@@ -3,9 +3,9 @@
 // the run's summary and draw its pictures without the physics engine.
 //
 // Format, version 1: plain text, one record per line, fields separated by single spaces. Floats are written
-// with 9 significant digits ("%.9g"), which reads back to the very same float (bits): a replay redraws the
-// pictures exactly. Vectors are three floats x y z; "rot" is the 3x3 rotation, rows r1 r2 r3 (row i = the
-// body's local axis i in world space, row-vector convention as Matrix).
+// as the shortest decimal that reads back to the very same float (bits; std::to_chars, e.g. 1.01, -0.5,
+// 3e-07): a replay redraws the pictures exactly. Vectors are three floats x y z; "rot" is the 3x3 rotation,
+// rows r1 r2 r3 (row i = the body's local axis i in world space, row-vector convention as Matrix).
 //   guardian-recording 1                  the first line: format and version
 //   scene NAME                            the scene's name (Scenes.h)
 //   bodies N                              bodies at the start; their shape lines follow
