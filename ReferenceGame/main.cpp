@@ -42,7 +42,7 @@ const char* const kUsage =
     "  --record FILE     write every frame (poses, shapes, contacts, hits) to FILE as text; with --scene\n"
     "                    all one file per scene, the scene's name joined before .rec (as --csv)\n"
     "  --replay FILE     play a --record file back without running the engine: its summary lines and\n"
-    "                    verdict, and with --image the same pictures; no other option applies\n"
+    "                    verdict, with --image its pictures; only --image and --image-every go with it\n"
     "  --list            name and describe the scenes, then exit\n"
     "  --help            print this and exit\n"
     "Each second: t, awake/moving bodies (\"asleep\" when all sleep), contacts, KE, deepest overlap, hits.\n"

@@ -28,7 +28,7 @@ Builds the reference game (Release, in build-release/) and runs it headless with
   --record FILE     write every frame (poses, shapes, contacts, hits) to FILE as text; with --scene
                     all one file per scene, the scene's name joined before .rec (as --csv)
   --replay FILE     play a --record file back without running the engine: its summary lines and
-                    verdict, and with --image the same pictures; no other option applies
+                    verdict, with --image its pictures; only --image and --image-every go with it
   --list            name and describe the scenes, then exit
   --help            print this and exit
 Each second: t, awake/moving bodies ("asleep" when all sleep), contacts, KE, deepest overlap, hits.
