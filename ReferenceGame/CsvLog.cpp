@@ -39,7 +39,10 @@ void CsvLog::row(const GameSample& s, const std::vector<Vector>& positions) {
 }
 
 std::string csvPathFor(const std::string& file, const std::string& scene) {
-    const std::string ext = ".csv";
+    return scenePathFor(file, scene, ".csv");
+}
+
+std::string scenePathFor(const std::string& file, const std::string& scene, const std::string& ext) {
     bool hasExt = file.size() >= ext.size() && file.compare(file.size() - ext.size(), ext.size(), ext) == 0;
     std::string stem = hasExt ? file.substr(0, file.size() - ext.size()) : file;
     return stem + "-" + scene + ext;

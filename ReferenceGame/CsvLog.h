@@ -39,3 +39,5 @@ private:
 // Where --csv FILE puts a scene's rows when one run writes several scenes (--scene all): the scene's name
 // joined to FILE before its ".csv" (runs.csv, tower -> runs-tower.csv; runs -> runs-tower.csv).
 std::string csvPathFor(const std::string& file, const std::string& scene);
+// The same rule for any extension (--record: ext ".rec"; runs.rec, tower -> runs-tower.rec).
+std::string scenePathFor(const std::string& file, const std::string& scene, const std::string& ext);

@@ -3,6 +3,7 @@
 
 #include "CsvLog.h"
 #include "RBDynamics.h"
+#include "RecordingWriter.h"
 #include "SvgDebugDraw.h"
 #include "World.h"
 #include "iCollisionListener.h"
@@ -48,6 +49,10 @@ void GameDesign::initialize(int now) {
     std::fprintf(m_options.out, "scene %s: %s; %zu bodies\n", m_spec.name, m_spec.description,
                  m_world->bodies().size());
     m_tracker.resolve(*m_world, m_options.track, m_spec.name, m_options.err);
+    if (m_recording) { // the scene as built: frame 0
+        m_recording->begin(*m_world, m_spec.name);
+        m_recording->frame(*m_world, 0, 0, statsOf(m_scene)->getStepCount(), 0.0f);
+    }
     if (m_csv) {
         m_csv->header(m_tracker.names());
         m_csv->row(measure(now, 0), m_tracker.positions()); // the start, t = 0
@@ -86,6 +91,8 @@ void GameDesign::update(int now) {
             summarise(s);
         }
     }
+    if (m_recording)
+        m_recording->frame(*m_world, m_frame, now - m_start, statsOf(m_scene)->getStepCount(), penetration);
     if (!m_imageDir.empty() && (m_frame % m_imageEvery == 0 || finished())) writeImage();
     if (m_failure)
         std::fprintf(m_options.out, "BLEW UP at %.3f s: %s\n", (now - m_start) / 1000.0, m_failure);
@@ -116,15 +123,19 @@ void GameDesign::summarise(const GameSample& s) {
     double perFrame = m_framesThisSecond ? ms / m_framesThisSecond : 0.0;
     m_wallStart = wall;
     m_framesThisSecond = 0;
+    printSummaryLine(m_options.out, s, perFrame);
+    m_tracker.print(m_options.out);
+    if (m_options.profile) printProfile();
+}
+
+void printSummaryLine(std::FILE* out, const GameSample& s, double msPerFrame) {
     // Everything but the last column is deterministic (a stepped clock drives the run). "asleep": every
     // moving body sleeps, so no contact is tested (contacts 0) and nothing moves.
-    std::fprintf(m_options.out,
+    std::fprintf(out,
                  "t %6.2f s  awake %4zu/%-4zu%s  contacts %5zu  KE %10.4f J  max pen %.4f m  hits %6ld"
                  "  | %.3f ms/frame\n",
                  s.time, s.awake, s.moving, s.allAsleep() ? " asleep" : "       ", s.contacts, s.kinetic,
-                 s.worstOverlap, s.hits, perFrame);
-    m_tracker.print(m_options.out);
-    if (m_options.profile) printProfile();
+                 s.worstOverlap, s.hits, msPerFrame);
 }
 
 // Where the last update's step time went (its steps' sum), phase by phase, and what it worked on.

@@ -1,5 +1,6 @@
 // GameDesign.h - the reference game's Design: builds a named scene, counts hits with a listener, prints a
-// per-second summary (and the tracked bodies), writes the CSV rows, and judges whether the scene blew up.
+// per-second summary (and the tracked bodies), writes the CSV rows and the recording, and judges whether the
+// scene blew up.
 #pragma once
 
 #include "GameRun.h"
@@ -12,6 +13,7 @@
 #include <string>
 
 class CsvLog;
+class RecordingWriter;
 class World;
 class iPhysicsScene;
 
@@ -34,6 +36,9 @@ public:
         m_imageEvery = every;
     }
 
+    // Writes every frame to recording (RecordingWriter.h; it must outlive the design).
+    void record(RecordingWriter* recording) { m_recording = recording; }
+
     // Why the scene failed, or nullptr when it held together.
     const char* failure() const { return m_failure; }
 
@@ -48,6 +53,7 @@ private:
     const SceneSpec& m_spec;
     const GameOptions& m_options;
     CsvLog* m_csv;
+    RecordingWriter* m_recording = nullptr;
     BodyTracker m_tracker;
     World* m_world = nullptr;
     struct HitCounter* m_hits = nullptr;

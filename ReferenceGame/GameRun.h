@@ -17,6 +17,8 @@ struct GameOptions {
     std::string imageDir;           // --image: debug drawings as DIR/<scene>_<frame>.svg ("" none)
     int imageEvery = 60;            // --image-every: a picture every N frames and at the last
     bool profile = false;           // --profile: the step's phases under each summary line
+    std::string record;             // --record: every frame written to this file ("" none; RecordingWriter.h)
+    std::string replay;             // --replay: the recording to play back instead of running (Replay.h)
     std::FILE* out = stdout;        // the summary, track and verdict lines
     std::FILE* err = stderr;        // notes (a tracked body a scene lacks, a CSV file that cannot be written)
 };
@@ -25,5 +27,5 @@ struct GameOptions {
 enum RunStatus { RUN_OK = 0, RUN_BLEW_UP = 1, RUN_BAD_ARGUMENTS = 2 };
 
 // Runs spec for options.frames frames, ending with "OK <scene>" or "FAIL <scene>: <reason>" on options.out.
-// RUN_BAD_ARGUMENTS (nothing run) when the CSV file cannot be opened.
+// RUN_BAD_ARGUMENTS (nothing run) when the CSV or recording file cannot be opened.
 RunStatus runScene(const SceneSpec& spec, const GameOptions& options);

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdio>
 
 struct GameSample {
     double time = 0;        // game time since the scene started, s (the stepped clock's)
@@ -19,3 +20,7 @@ struct GameSample {
     long hits = 0;          // HitWall calls heard since the start
     bool allAsleep() const { return awake == 0 && moving > 0; }
 };
+
+// The per-second summary line of s (the live run's and --replay's): t, awake/moving bodies, contacts, KE,
+// deepest overlap so far, hits, and the wall time per frame (the only field that is not deterministic).
+void printSummaryLine(std::FILE* out, const GameSample& s, double msPerFrame);

@@ -36,6 +36,7 @@ iPhysicsFrame* World::box(const Vector& centre, const Vector& half, float mass, 
     d->mass = mass;
     d->setInertiaTensor(getBoxInertiaTensor(mass, half));
     m_shapes.push_back(CreateCOBB(f->getRB(), half));
+    m_shapeInfo.push_back({Shape::Box, int(m_bodies.size()), half, 0.0f});
     m_bodies.push_back(f);
     return f;
 }
@@ -47,6 +48,7 @@ iPhysicsFrame* World::sphere(const Vector& centre, float radius, float mass) {
     d->mass = mass;
     d->setInertiaTensor(getSphereInertiaTensor(mass, radius));
     m_shapes.push_back(CreateCSphere(f->getRB(), radius));
+    m_shapeInfo.push_back({Shape::Sphere, int(m_bodies.size()), Vector(radius, radius, radius), 0.0f});
     m_bodies.push_back(f);
     return f;
 }
@@ -70,7 +72,10 @@ iPhysicsFrame* World::named(const std::string& name) const {
     return nullptr;
 }
 
-void World::ground(float y) { m_shapes.push_back(CreateCPlane(nullptr, Vector(0, 1, 0), y)); }
+void World::ground(float y) {
+    m_shapes.push_back(CreateCPlane(nullptr, Vector(0, 1, 0), y));
+    m_shapeInfo.push_back({Shape::Plane, -1, Vector(0, 1, 0), y});
+}
 
 float World::kineticEnergy() const {
     float e = 0;

@@ -35,6 +35,16 @@ public:
     iCollisionSpace* space() const { return m_space; }
     const std::vector<iPhysicsFrame*>& bodies() const { return m_bodies; }
 
+    // What each collision shape was built as, in the order built (the order the space holds and draws them),
+    // so that a picture can be drawn without the space (the game's --record and --replay).
+    struct Shape {
+        enum Kind { Sphere, Box, Plane } kind;
+        int body;     // its body's index in bodies(); -1 for a plane (it has no body)
+        Vector size;  // Sphere: (r, r, r); Box: half extents; Plane: the unit normal
+        float offset; // Plane: where it lies along its normal (0 for the others)
+    };
+    const std::vector<Shape>& shapes() const { return m_shapeInfo; }
+
     // Names a body of this world for people (the game's --track, its CSV columns): a scene names the few
     // bodies worth watching, e.g. name(tower.back(), "top"). A name given again moves to the new body;
     // returns body. named() is nullptr for a name no body has.
@@ -54,5 +64,6 @@ private:
     iCollisionSpace* m_space;
     std::vector<iPhysicsFrame*> m_bodies;
     std::vector<iCollisionGeometry*> m_shapes;
+    std::vector<Shape> m_shapeInfo;                              // m_shapes' descriptions
     std::vector<std::pair<std::string, iPhysicsFrame*>> m_names; // in naming order
 };

@@ -2,15 +2,19 @@
 // design->update(now)) on a stepped 16 ms clock, for one named scene or all of them.
 //
 // Usage: ReferenceGame [--scene NAME|all] [--frames N] [--csv FILE] [--csv-every N] [--track NAME]...
-//                      [--image DIR] [--image-every N] [--profile] [--list] [--help]
+//                      [--image DIR] [--image-every N] [--profile] [--record FILE] [--list] [--help]
+//        ReferenceGame --replay FILE [--image DIR] [--image-every N]
 // Each scene ends with a verdict line on stdout: "OK <scene>" or "FAIL <scene>: <reason>". --csv writes the
 // per-second measurements as CSV (CsvLog.h: columns; scripts/plot.sh plots them), --track prints the position
 // of a body a scene named (World::name) each second, --image writes debug drawings as SVG (SvgDebugDraw.h),
-// --profile prints where each second's step time went (iPhysicsSceneProfile.h). The run itself is GameRun.h's
-// runScene. Exit status: 0 when every scene held together (and for --list, --help), 1 when one blew up (NaN,
-// energy growth, deep penetration), 2 on bad arguments.
+// --profile prints where each second's step time went (iPhysicsSceneProfile.h), --record writes every frame
+// (RecordingWriter.h: the format) and --replay plays such a file back without the engine (Replay.h). The run
+// itself is GameRun.h's runScene. Exit status: 0 when every scene held together (and for --list, --help), 1
+// when one blew up (NaN, energy growth, deep penetration; for --replay: the recorded run did), 2 on bad
+// arguments (and a recording that cannot be read whole).
 #include "CsvLog.h"
 #include "GameRun.h"
+#include "Replay.h"
 #include "Scenes.h"
 
 #include <cstdio>
@@ -22,7 +26,8 @@ namespace {
 
 const char* const kUsage =
     "usage: ReferenceGame [--scene NAME|all] [--frames N] [--csv FILE] [--csv-every N] [--track NAME]...\n"
-    "                     [--image DIR] [--image-every N] [--profile] [--list] [--help]\n"
+    "                     [--image DIR] [--image-every N] [--profile] [--record FILE] [--list] [--help]\n"
+    "       ReferenceGame --replay FILE [--image DIR] [--image-every N]\n"
     "  --scene NAME|all  the scene to run, or every scene in turn (default: pyramid)\n"
     "  --frames N        frames per scene on a stepped 16 ms clock, N > 0 (default: 600, about 10 s)\n"
     "  --csv FILE        also write the measurements as CSV to FILE: a header row, a row at t = 0 and one\n"
@@ -34,12 +39,17 @@ const char* const kUsage =
     "  --image DIR       write the scene's debug drawing as DIR/<scene>_<frame>.svg (DIR must exist)\n"
     "  --image-every N   ... every N frames, N > 0, and at the last frame (default: 60)\n"
     "  --profile         print each second where the last frame's step time went, phase by phase\n"
+    "  --record FILE     write every frame (poses, shapes, contacts, hits) to FILE as text; with --scene\n"
+    "                    all one file per scene, the scene's name joined before .rec (as --csv)\n"
+    "  --replay FILE     play a --record file back without running the engine: its summary lines and\n"
+    "                    verdict, with --image its pictures; only --image and --image-every go with it\n"
     "  --list            name and describe the scenes, then exit\n"
     "  --help            print this and exit\n"
     "Each second: t, awake/moving bodies (\"asleep\" when all sleep), contacts, KE, deepest overlap, hits.\n"
     "Each scene ends with \"OK <scene>\" or \"FAIL <scene>: <reason>\".\n"
     "scripts/plot.sh CSV OUTDIR plots a --csv file.\n"
-    "Exit status: 0 every scene held together, 1 a scene blew up, 2 bad arguments.\n";
+    "Exit status: 0 every scene held together, 1 a scene blew up, 2 bad arguments (or a damaged "
+    "recording).\n";
 
 int usage() { // bad arguments
     std::fputs(kUsage, stderr);
@@ -69,6 +79,10 @@ int main(int argc, char** argv) {
             if ((options.imageEvery = std::atoi(argv[++i])) <= 0) return usage();
         } else if (!std::strcmp(argv[i], "--profile")) {
             options.profile = true;
+        } else if (!std::strcmp(argv[i], "--record") && i + 1 < argc && *argv[i + 1]) { // RecordingWriter.h
+            options.record = argv[++i];
+        } else if (!std::strcmp(argv[i], "--replay") && i + 1 < argc && *argv[i + 1]) { // Replay.h
+            options.replay = argv[++i];
         } else if (!std::strcmp(argv[i], "--help") || !std::strcmp(argv[i], "-h")) {
             std::fputs(kUsage, stdout);
             return 0;
@@ -80,11 +94,19 @@ int main(int argc, char** argv) {
         }
     }
     if (options.csvEvery > 0 && options.csv.empty()) return usage(); // --csv-every without --csv
+    if (!options.replay.empty()) { // only --image and --image-every go with it
+        for (int i = 1; i < argc; i += 2)
+            if (std::strcmp(argv[i], "--replay") && std::strcmp(argv[i], "--image") &&
+                std::strcmp(argv[i], "--image-every"))
+                return usage();
+        return replayRecording(options);
+    }
     int status = RUN_OK;
     if (name == "all") {
-        const std::string csv = options.csv;
+        const std::string csv = options.csv, record = options.record;
         for (const SceneSpec& s : allScenes()) {
             if (!csv.empty()) options.csv = csvPathFor(csv, s.name);
+            if (!record.empty()) options.record = scenePathFor(record, s.name, ".rec");
             int st = runScene(s, options);
             if (st == RUN_BAD_ARGUMENTS) return st;
             status = st > status ? st : status;

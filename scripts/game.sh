@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Builds the reference game (Release) and runs it headless; arguments go to the game.
 # Usage: scripts/game.sh [--scene NAME|all] [--frames N] [--csv FILE] [--csv-every N] [--track NAME]...
-#                       [--image DIR] [--image-every N] [--profile] [--list] [--help]
+#                       [--image DIR] [--image-every N] [--profile] [--record FILE] [--list] [--help]
+#        scripts/game.sh --replay FILE [--image DIR] [--image-every N]
 # (scripts/plot.sh CSV OUTDIR plots a --csv file.)
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -9,7 +10,8 @@ for arg in "$@"; do
   if [ "$arg" = "--help" ] || [ "$arg" = "-h" ]; then
     cat <<'USAGE'
 usage: scripts/game.sh [--scene NAME|all] [--frames N] [--csv FILE] [--csv-every N] [--track NAME]...
-                       [--image DIR] [--image-every N] [--profile] [--list] [--help]
+                       [--image DIR] [--image-every N] [--profile] [--record FILE] [--list] [--help]
+       scripts/game.sh --replay FILE [--image DIR] [--image-every N]
 Builds the reference game (Release, in build-release/) and runs it headless with these arguments
 (--help builds nothing):
   --scene NAME|all  the scene to run, or every scene in turn (default: pyramid)
@@ -23,12 +25,16 @@ Builds the reference game (Release, in build-release/) and runs it headless with
   --image DIR       write the scene's debug drawing as DIR/<scene>_<frame>.svg (DIR must exist)
   --image-every N   ... every N frames, N > 0, and at the last frame (default: 60)
   --profile         print each second where the last frame's step time went, phase by phase
+  --record FILE     write every frame (poses, shapes, contacts, hits) to FILE as text; with --scene
+                    all one file per scene, the scene's name joined before .rec (as --csv)
+  --replay FILE     play a --record file back without running the engine: its summary lines and
+                    verdict, with --image its pictures; only --image and --image-every go with it
   --list            name and describe the scenes, then exit
   --help            print this and exit
 Each second: t, awake/moving bodies ("asleep" when all sleep), contacts, KE, deepest overlap, hits.
 Each scene ends with "OK <scene>" or "FAIL <scene>: <reason>".
 scripts/plot.sh CSV OUTDIR plots a --csv file.
-Exit status: 0 every scene held together, 1 a scene blew up, 2 bad arguments.
+Exit status: 0 every scene held together, 1 a scene blew up, 2 bad arguments (or a damaged recording).
 USAGE
     exit 0
   fi
