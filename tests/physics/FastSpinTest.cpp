@@ -111,8 +111,9 @@ TEST(FastSpin, EnergyNeverGrowsAndMomentumHoldsForATorqueFreeIntermediateAxisSpi
                 // The flip takes ~2 ln(1 / tilt) / (0.577 w) (24 ms at 1,000 rad/s): a step that turns the
                 // body more than 2 rad cannot resolve it (the measured limit: at 1,000 rad/s and 60 or 120
                 // Hz the axis stays along L, energy and |L| held). Everywhere else it must flip.
-                if (w / hz < 2.0)
+                if (w / hz < 2.0) {
                     EXPECT_GE(r.flips.size(), 2u) << "integrator " << i << " w " << w << " hz " << hz;
+                }
             }
         }
     }
