@@ -32,7 +32,7 @@ struct SpinRun {
 
 // Spins a body of the moments above with w0 (body = world axes at t = 0) for `steps` steps at hz, checking
 // after every step. The first step derives L from w; E0 and |L0| are computed from w0 here, in double.
-SpinRun spin(double w, double hz, Integrator integrator, long steps, double tilt = 1e-3) {
+SpinRun spinFast(double w, double hz, Integrator integrator, long steps, double tilt = 1e-3) {
     SceneHolder h(int(hz), integrator);
     settingsOf(h.scene)->setGravity(Vector());
     settingsOf(h.scene)->setMaxStepsPerUpdate(10);
@@ -101,7 +101,7 @@ TEST(FastSpin, EnergyNeverGrowsAndMomentumHoldsForATorqueFreeIntermediateAxisSpi
                          INTEGRATOR_RK4}) {
         for (double w : {10.0, 100.0, 1000.0}) {
             for (double hz : {60.0, 120.0, 1000.0}) {
-                SpinRun r = spin(w, hz, i, 10000);
+                SpinRun r = spinFast(w, hz, i, 10000);
                 std::printf(
                     "integrator %d, %5.0f rad/s, %4.0f Hz: energy +%.2e / -%.2e, |L| %.2e, %zu flips\n",
                     int(i), w, hz, r.maxEnergyGrowth, r.maxEnergyLoss, r.maxMomentumError, r.flips.size());
@@ -132,7 +132,7 @@ TEST(FastSpin, TheIntermediateAxisFlipsAtTheAnalyticInterval) {
                          INTEGRATOR_RK4}) {
         for (Case c : {Case{10, 120}, Case{10, 1000}, Case{100, 1000}}) {
             const double tilt = 1e-2;
-            SpinRun r = spin(c.w, c.hz, i, 10000, tilt);
+            SpinRun r = spinFast(c.w, c.hz, i, 10000, tilt);
             const double expected = analyticFlipInterval(c.w, tilt);
             ASSERT_GE(r.flips.size(), 3u) << "integrator " << i << " w " << c.w << " hz " << c.hz;
             const double measured = (r.flips.back() - r.flips.front()) / double(r.flips.size() - 1);
