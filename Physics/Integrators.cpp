@@ -2,7 +2,8 @@
 //
 // Linear: dx/dt = v, dv/dt = a(state). Angular: dL/dt = torque(state), w = R I^-1 R^T L, dq/dt = 1/2 (0, w)
 // q. Integrating L rather than w makes the gyroscopic term w x (I w) implicit in the model: with no torque, L
-// is constant and only the rotation moves.
+// is constant and only the rotation moves. Every rotation taken at constant L then keeps the kinetic energy
+// 1/2 L . w it started with (keepRotationalEnergy), so a free body's |L| and E are both conserved.
 #include "Integrators.h"
 
 #include "MathEigen.h"
@@ -61,11 +62,46 @@ Quat rotateMidpoint(const Composite& c, const Quat& q, const Vec3& L, float dt) 
     return rotateBy(q, worldInverseInertia(c, half) * L, dt);
 }
 
+// Turns q, the end of a rotation step taken from qStart at constant momentum L, so that the body-frame
+// momentum b = R^T L lies where it started on the energy ellipsoid: 1/2 b . I^-1 b = E(qStart). |b| = |L|
+// already, so b is moved within its sphere along the energy's gradient (Newton steps, at most a quarter of
+// |L| each, in double) and R is turned by the smallest rotation taking the new b to the old. The free
+// rigid body conserves both |L| and E; a rotation step alone conserves only |L|, and its energy error
+// grows when the body turns far in one step (at 100 rad/s and 120 Hz the intermediate-axis spin gained
+// 100 %, drifting to the lightest axis). The kept energy makes the body-frame momentum stay on its own
+// polhode, whatever the step: the orbit is exact, only its phase carries the integrator's error.
+Quat keepRotationalEnergy(const Composite& c, const Quat& qStart, const Quat& q, const Vec3& L) {
+    using V = Eigen::Vector3d;
+    const Eigen::Matrix3d a = c.invInertia.cast<double>();
+    const V l = L.cast<double>();
+    // Unit in double: a float quaternion's |q|^2 = 1 +- 1e-7 would scale b, and the energy would walk by
+    // that much a step (9e-5 over 10^4 steps at 10 rad/s and 1,000 Hz, against 2e-7 normalised).
+    const V start = qStart.cast<double>().normalized().conjugate() * l;
+    const V end = q.cast<double>().normalized().conjugate() * l;
+    const double target = start.dot(a * start), r2 = end.squaredNorm(); // 2E, |L|^2
+    if (!(r2 > 0) || !(target > 0)) return q;
+    const double r = std::sqrt(r2);
+    V b = end;
+    for (int i = 0; i < 24; ++i) {
+        const V ab = a * b;
+        const double twoE = b.dot(ab), error = twoE - target;
+        if (!(std::fabs(error) > 1e-12 * target)) break;
+        const V g = ab - (twoE / r2) * b; // d(b.Ab)/dt along b + t g is 2 |g|^2
+        const double g2 = g.squaredNorm();
+        if (!(g2 > 1e-24 * target * target / r2)) break; // on a principal axis: nowhere to go
+        double t = -error / (2 * g2);
+        const double move = std::fabs(t) * std::sqrt(g2);
+        if (move > 0.25 * r) t *= 0.25 * r / move;
+        b = (b + t * g).normalized() * r;
+    }
+    return (q * Quat(Eigen::Quaterniond::FromTwoVectors(b, end).cast<float>())).normalized();
+}
+
 void explicitEuler(const Composite& c, MotionState& s, float dt) {
     Derivative d = evaluate(c, s, 0);
     s.x += s.v * dt; // the old velocity: this is what makes it "explicit" (and energy-gaining)
     s.v += d.acceleration * dt;
-    s.q = rotateBy(s.q, d.omega, dt);
+    s.q = keepRotationalEnergy(c, s.q, rotateBy(s.q, d.omega, dt), s.L);
     s.L += d.torque * dt;
 }
 
@@ -74,7 +110,7 @@ void semiImplicitEuler(const Composite& c, MotionState& s, float dt) {
     s.v += d.acceleration * dt; // velocities first ...
     s.L += d.torque * dt;
     s.x += s.v * dt; // ... then positions with the new velocities (symplectic)
-    s.q = rotateMidpoint(c, s.q, s.L, dt);
+    s.q = keepRotationalEnergy(c, s.q, rotateMidpoint(c, s.q, s.L, dt), s.L);
 }
 
 void velocityVerlet(const Composite& c, MotionState& s, float dt) {
@@ -85,7 +121,7 @@ void velocityVerlet(const Composite& c, MotionState& s, float dt) {
     s.x += s.v * dt + d0.acceleration * (h * dt);
     s.v += d0.acceleration * h;
     s.L += d0.torque * h;
-    s.q = rotateMidpoint(c, s.q, s.L, dt);
+    s.q = keepRotationalEnergy(c, s.q, rotateMidpoint(c, s.q, s.L, dt), s.L);
     Derivative d1 = evaluate(c, s, dt);
     s.v += d1.acceleration * h;
     s.L += d1.torque * h;
@@ -131,8 +167,13 @@ void rungeKutta4(const Composite& c, MotionState& s, float dt) {
         Quat dq = Quat(0.0f, ks[i]->omega.x(), ks[i]->omega.y(), ks[i]->omega.z()) * states[i]->q;
         sum.coeffs() += weights[i] * dq.coeffs();
     }
+    const Quat start = s.q;
     s.q.coeffs() += (0.5f * w) * sum.coeffs();
     s.q.normalize();
+    // A torque-free step (L unchanged) is a free rotation: its energy is kept. Under torque the stages'
+    // momenta differ and RK4's own fourth-order energy stands.
+    if (k1.torque.isZero(0) && k2.torque.isZero(0) && k3.torque.isZero(0) && k4.torque.isZero(0))
+        s.q = keepRotationalEnergy(c, start, s.q, s.L);
 }
 
 } // namespace

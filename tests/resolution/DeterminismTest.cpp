@@ -36,8 +36,8 @@ unsigned long long boxPile() {
 
 // The committed results: g++ and clang++ (x86-64, Debian 12) agree, in every build type: SSE2 arithmetic,
 // no FMA contraction (-ffp-contract=off), and scene code that draws its random numbers in a stated order.
-constexpr unsigned long long kShootingHash = 0xe15f37ecc9027c42ull;
-constexpr unsigned long long kBoxPileHash = 0xb49ad45c69f08fc0ull;
+constexpr unsigned long long kShootingHash = 0x9fca3828f6e3d1d9ull;
+constexpr unsigned long long kBoxPileHash = 0xf620f5168e2f4759ull;
 
 } // namespace
 
