@@ -77,6 +77,9 @@ struct Manifold {
     int a = -1, b = -1;                            // indices into the solver's bodies; a is g1's root
     RBDynamics *rootA = nullptr, *rootB = nullptr; // the bodies (nullptr: the static world)
     int age = 0; // steps since the detector last reported the pair (a kept manifold lives one step)
+    // Carried unsolved while both bodies rest (asleep or fixed): an island that wakes starts from its
+    // impulses, as it would have had it stayed awake.
+    bool dormant = false;
     float friction = 0, restitution = 0;
     bool bounces = false;  // a point bounces this step: its overlap is projected out entirely
     float projectable = 0; // how much further its overlap may still be projected out this step

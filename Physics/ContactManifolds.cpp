@@ -129,11 +129,20 @@ void ContactSolver::keepPoints(const SolverBodyAccess& access,
     for (Manifold& m : m_manifolds) {
         if (const size_t* last = m_lastIndex.find(PairKey{m.g1, m.g2})) keepFrom(m_last[*last], m);
     }
-    // A pair the detector no longer reports at all (lifted by a hair) keeps its points for one step.
+    // A pair the detector no longer reports at all (lifted by a hair) keeps its points for one step; a pair
+    // at rest (an island asleep: the detector skips it) keeps its manifold unsolved until it wakes.
+    m_dormant.clear();
     for (const Manifold& old : m_last) {
-        if (old.age > 0 || reported.find(PairKey{old.g1, old.g2}) || !access.alive(old.rootA) ||
-            !access.alive(old.rootB))
+        if (reported.find(PairKey{old.g1, old.g2}) || !access.alive(old.rootA) || !access.alive(old.rootB))
             continue;
+        if (access.resting(old.rootA) && access.resting(old.rootB)) {
+            if (old.age == 0 || old.dormant) {
+                m_dormant.push_back(old);
+                m_dormant.back().dormant = true;
+            }
+            continue;
+        }
+        if (old.age > 0 || old.dormant) continue;
         Manifold m = old;
         m.age = 1;
         m.count = 0;
@@ -185,6 +194,9 @@ void ContactSolver::setMemory(const Memory& memory) {
 void ContactSolver::storeImpulses() {
     m_last.swap(m_manifolds);
     m_manifolds.clear();
+    for (Manifold& m : m_last) m.dormant = false;
+    m_last.insert(m_last.end(), m_dormant.begin(), m_dormant.end());
+    m_dormant.clear();
     m_lastIndex.clear();
     for (size_t i = 0; i < m_last.size(); ++i) m_lastIndex.emplace(PairKey{m_last[i].g1, m_last[i].g2}, i);
 }

@@ -7,6 +7,8 @@
 #include "iCollisionGeometry.h"
 #include "iCollisionSpace.h"
 
+#include <algorithm>
+
 namespace physics {
 
 RigidBody* SceneBodyAccess::bodyOf(const RBDynamics* root) const {
@@ -42,6 +44,12 @@ void SceneBodyAccess::refresh(SolverBody& b) const {
     const bool still = body && body->asleep();
     b.v = still ? Vec3::Zero() : toEigen(d.velocity);
     b.w = still ? Vec3::Zero() : toEigen(d.angularVelocity);
+}
+
+bool SceneBodyAccess::resting(const RBDynamics* root) const {
+    if (!root || root->physicsType == PHYS_FixedInSpace) return true;
+    RigidBody* body = bodyOf(root);
+    return body && body->asleep();
 }
 
 void SceneBodyAccess::setMotion(SolverBody& b, RigidBody* body, const Composite& c, const Vec3& v,
@@ -161,6 +169,25 @@ void Islands::wakeTouched(const std::vector<RigidBody*>& bodies) {
     }
 }
 
+bool Islands::wakeIslandMates(const std::vector<RigidBody*>& bodies) {
+    m_woken.clear();
+    for (const RigidBody* b : bodies)
+        if (b->sleepIsland != 0 && !b->asleep()) m_woken.push_back(b->sleepIsland);
+    if (m_woken.empty()) return false;
+    std::sort(m_woken.begin(), m_woken.end());
+    bool woke = false;
+    for (RigidBody* b : bodies) {
+        if (b->sleepIsland == 0 || !std::binary_search(m_woken.begin(), m_woken.end(), b->sleepIsland))
+            continue;
+        b->sleepIsland = 0;
+        if (!b->asleep() || b->dying() || b->pendingRemoval) continue;
+        b->setAsleep(false);
+        b->restTime = 0;
+        woke = true;
+    }
+    return woke;
+}
+
 void Islands::updateSleep(const std::vector<RigidBody*>& bodies, float dt) {
     std::vector<float>& leastRest = m_leastRest;
     leastRest.assign(m_parent.size(), kTimeToSleep * 2);
@@ -173,9 +200,13 @@ void Islands::updateSleep(const std::vector<RigidBody*>& bodies, float dt) {
         float& least = leastRest[find(*it)];
         least = std::min(least, b->restTime);
     }
+    m_sleepIds.assign(m_parent.size(), 0);
     for (RigidBody* b : bodies) {
         const int* it = m_index.find(b);
         if (!it || b->asleep() || leastRest[find(*it)] < kTimeToSleep) continue;
+        unsigned& id = m_sleepIds[size_t(find(*it))];
+        if (id == 0) id = ++m_lastSleepId == 0 ? ++m_lastSleepId : m_lastSleepId; // 0 means none
+        b->sleepIsland = id;
         RBDynamics& d = b->getDynamics();
         b->setAsleep(true);
         d.velocity = d.angularVelocity = d.angularMomentum = Vector();

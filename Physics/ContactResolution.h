@@ -41,6 +41,7 @@ public:
                    const Vec3& dv, const Vec3& dw) const;
     void storeVelocity(const SolverBody& b) const override;
     bool alive(const RBDynamics* root) const override;
+    bool resting(const RBDynamics* root) const override;
     // Records the solver's writes as the simulator's own, so the next step does not take them for edits;
     // every body leaves the solver (solverSlot -1).
     void acceptWrites(const std::vector<SolverBody>& bodies) const;
@@ -67,6 +68,9 @@ public:
     // a moving body outside the islands (fixed in space, kinematic or a game's own, with a velocity or moved
     // since the last step: a platform, a lift).
     void wakeTouched(const std::vector<RigidBody*>& bodies);
+    // Wakes the sleeping bodies of every island a member of which is awake again (woken by the game or by a
+    // touch): an island sleeps and wakes whole. Returns whether any body woke.
+    bool wakeIslandMates(const std::vector<RigidBody*>& bodies);
     // Adds dt of rest to bodies below the sleep speeds; an island whose bodies all rested long enough sleeps.
     // (resolveContacts zeroes the rest time of a body still being pushed out of an overlap.)
     void updateSleep(const std::vector<RigidBody*>& bodies, float dt);
@@ -93,6 +97,9 @@ private:
     FlatMap<const RBDynamics*, Pose> m_outsiders, m_outsidersNext; // last step's poses, this one's
     std::vector<char> m_awake;                                     // per island root (wakeTouched)
     std::vector<float> m_leastRest;                                // per island root (updateSleep)
+    std::vector<unsigned> m_sleepIds;                              // per island root: its sleep id
+    std::vector<unsigned> m_woken;                                 // sleep ids with a member awake again
+    unsigned m_lastSleepId = 0;
 };
 
 } // namespace physics

@@ -74,6 +74,9 @@ public:
     virtual void storePose(const SolverBody& b) const;
     // Whether a body of last step is still there to be touched (nullptr: the static world).
     virtual bool alive(const RBDynamics* root) const { return !root; }
+    // Whether a body rests outside the solve, asleep or fixed (nullptr, the static world, does): a pair of
+    // two such keeps its manifold, unsolved, for when it wakes.
+    virtual bool resting(const RBDynamics* root) const { return !root; }
 
 private:
     Vec3 m_forceVelocity;
@@ -158,6 +161,7 @@ private:
     FlatMap<const RBDynamics*, int> m_bodyIndex;
     std::vector<Manifold> m_manifolds; // this step's, while solving
     std::vector<Manifold> m_last;      // last step's, in solving order (for warm starting and keeping)
+    std::vector<Manifold> m_dormant;   // this step's pairs at rest (both asleep or fixed), carried unsolved
     FlatMap<PairKey, size_t, PairKeyHash> m_lastIndex; // into m_last
     FlatMap<PairKey, size_t, PairKeyHash> m_current;   // into m_manifolds, while they are built
     float m_maxDepthBefore = 0, m_maxDepthAfter = 0;

@@ -256,6 +256,8 @@ void PhysicsScene::step(float dt) {
         b->adoptFrameEdits();
         if (b->validate("before a step")) b->snapshotValid(); // the game's valid edits are kept on failure
     }
+    if (m_sleeping)
+        m_islands.wakeIslandMates(m_bodies); // a sleeping island wakes whole, before the space looks
     { // After every edit is in (a root's adopted frame moves its chain): world poses, O(1) a body.
         RigidBody::PoseCache poses;
         for (RigidBody* b : m_bodies)
@@ -271,21 +273,20 @@ void PhysicsScene::step(float dt) {
     const CollisionContact* contacts = nullptr;
     size_t contactCount = 0;
     const unsigned spaceVersion = m_spaceVersion;
-    if (iCollisionSpace* space = m_space) {
-        space->populateContactList(dt);
-        // A listener may have replaced this scene's space meanwhile (a notifying space cannot be deleted,
-        // so `space` is alive): then its contacts are not this scene's any more.
-        if (m_spaceVersion == spaceVersion) {
-            contacts = space->getContactList();
-            contactCount = space->getNumContacts();
-        }
-    }
+    findContacts(dt, spaceVersion, contacts, contactCount);
     m_profiler.lap(&PhysicsProfile::collision);
 
-    // 4. Islands of touching bodies: a sleeping body touched by an awake one wakes with its island.
+    // 4. Islands of touching bodies: a sleeping body touched by an awake one wakes, and with it its whole
+    //    island as it fell asleep (at once: woken a layer a step, a pyramid woken at its top collapsed in a
+    //    wave, each layer starting cold under the weight above). The pairs among the woken were not tested
+    //    (both slept): the contacts are found again.
     if (m_sleeping) {
         m_islands.build(m_bodies, m_byDynamics, contacts, contactCount);
         m_islands.wakeTouched(m_bodies);
+        if (m_islands.wakeIslandMates(m_bodies) && m_spaceVersion == spaceVersion) {
+            findContacts(dt, spaceVersion, contacts, contactCount);
+            m_islands.build(m_bodies, m_byDynamics, contacts, contactCount);
+        }
     }
     m_profiler.lap(&PhysicsProfile::islands);
 
@@ -360,6 +361,21 @@ void PhysicsScene::countStep(size_t contacts, bool solved) {
     p.solverRows = 0;
     if (solved)
         for (const Manifold& m : m_solver.manifolds()) p.solverRows += 3 * size_t(m.count);
+}
+
+void PhysicsScene::findContacts(float dt, unsigned spaceVersion, const CollisionContact*& contacts,
+                                size_t& count) {
+    contacts = nullptr;
+    count = 0;
+    if (iCollisionSpace* space = m_space) {
+        space->populateContactList(dt);
+        // A listener may have replaced this scene's space meanwhile (a notifying space cannot be deleted,
+        // so `space` is alive): then its contacts are not this scene's any more.
+        if (m_spaceVersion == spaceVersion) {
+            contacts = space->getContactList();
+            count = space->getNumContacts();
+        }
+    }
 }
 
 void PhysicsScene::runFixedUpdaters(float dt) {

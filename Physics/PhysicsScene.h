@@ -103,6 +103,8 @@ private:
     ~PhysicsScene();
     void step(float dt);
     void runFixedUpdaters(float dt);
+    // The space's contacts at the current poses (none when it was replaced since spaceVersion).
+    void findContacts(float dt, unsigned spaceVersion, const CollisionContact*& contacts, size_t& count);
     void countStep(size_t contacts, bool solved); // the profile's counts after a step
     // Forces on a composite over dt: moves it, or (one the contact solver moves) hands the solver its
     // velocities.

@@ -109,6 +109,8 @@ public:
     bool asleep() const { return m_dyn.sleeping; }
     void setAsleep(bool on) { m_dyn.sleeping = on; }
     float restTime = 0; // seconds spent below the sleep speeds
+    // The island it fell asleep with (0: none, or awake): one member woken wakes them all (Islands).
+    unsigned sleepIsland = 0;
     // True when the game touched a sleeping body's state since its last step: a velocity, a force or
     // torque, or a new pose. Such a body wakes.
     bool editedWhileAsleep() const;
