@@ -142,6 +142,7 @@ public:
         Matrix stepOrientation, writtenOrientation;
         Vec3 forceDv, forceDw;
         float restTime, compositeMass;
+        unsigned sleepIsland;
         bool hasComposite;
         Mat3 compositeInertia;
     };

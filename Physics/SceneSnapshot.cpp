@@ -41,7 +41,7 @@ RigidBody::Saved RigidBody::save() const {
     return Saved{m_dyn,          m_lastValid,       m_dyn.sleeping,     m_dyn.teleports, m_prevPosition,
                  m_stepPosition, projectedBy,       writtenOmega,       writtenMomentum, m_prevRotation,
                  rotation,       m_stepOrientation, writtenOrientation, forceDv,         forceDw,
-                 restTime,       compositeMass,     hasComposite,       compositeInertia};
+                 restTime,       compositeMass,     sleepIsland,        hasComposite,    compositeInertia};
 }
 
 void RigidBody::load(const Saved& s) {
@@ -63,6 +63,7 @@ void RigidBody::load(const Saved& s) {
     forceDw = s.forceDw;
     restTime = s.restTime;
     compositeMass = s.compositeMass;
+    sleepIsland = s.sleepIsland;
     hasComposite = s.hasComposite;
     compositeInertia = s.compositeInertia;
     solverSlot = -1;
