@@ -48,5 +48,6 @@ void handleInput(PanelState& state, Simulation& sim, OrbitCamera& camera, int wi
         if (ImGui::IsKeyPressed(GLFW_KEY_SPACE, false)) state.paused = !state.paused;
         if (ImGui::IsKeyPressed(GLFW_KEY_N)) state.stepRequested = true;
         if (ImGui::IsKeyPressed(GLFW_KEY_R, false)) state.resetRequested = true;
+        if (ImGui::IsKeyPressed(GLFW_KEY_F12, false)) state.screenshotRequested = true;
     }
 }

@@ -1,6 +1,6 @@
 // Input.h - the mouse and keyboard in the scene (what ImGui's panel does not take): drag to orbit the
 // camera, drag on a body to pull it with the mouse spring, wheel to zoom, right click to shoot a sphere,
-// space / n / r to pause, step and reset.
+// space / n / r to pause, step and reset, F12 to save a screenshot.
 #pragma once
 
 class Simulation;

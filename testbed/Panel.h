@@ -14,8 +14,9 @@ struct PanelState {
     unsigned flags = DEBUGDRAW_Default; // DebugDrawFlag values
     bool stepRequested = false;         // one physics step (pauses)
     bool resetRequested = false;
-    int sceneRequested = -1; // an index into testbedScenes(), or -1
-    int scene = 0;           // the index of the scene shown
+    bool screenshotRequested = false; // F12: testbed-NNN.png in the working directory
+    int sceneRequested = -1;          // an index into testbedScenes(), or -1
+    int scene = 0;                    // the index of the scene shown
 };
 
 // Draws the panel (inside an ImGui frame) and applies knob changes to sim at once; scene changes, steps and

@@ -40,7 +40,7 @@ const char* const kUsage =
     "  --target X,Y,Z\n"
     "  --no-ui            no panel: only the scene\n"
     "Mouse: drag to turn the camera, drag a body to pull it, wheel to zoom, right click to shoot a sphere.\n"
-    "Keys: space pause/run, n one step, r reset.\n";
+    "Keys: space pause/run, n one step, r reset, F12 screenshot (testbed-NNN.png).\n";
 
 struct Options {
     std::string scene = "pyramid", screenshot;
@@ -149,6 +149,7 @@ int main(int argc, char** argv) {
         PanelState state;
         state.scene = indexOf(spec);
         GlDebugDraw draw;
+        int screenshots = 0;
         iClock* clock = headless ? CreateSteppedClock(16) : CreateRealClock();
         for (int frame = 1; !glfwWindowShouldClose(window); ++frame) {
             glfwPollEvents();
@@ -185,6 +186,12 @@ int main(int argc, char** argv) {
             drawDebugTexts(draw, camera, width, height);
             ImGui::Render();
             ImGui_ImplOpenGL2_RenderDrawData(ImGui::GetDrawData());
+            if (state.screenshotRequested) {
+                char name[32];
+                std::snprintf(name, sizeof name, "testbed-%03d.png", ++screenshots);
+                if (writeScreenshot(name, width, height)) std::printf("Testbed: wrote %s\n", name);
+                state.screenshotRequested = false;
+            }
             if (headless && frame >= o.frames) {
                 status = writeScreenshot(o.screenshot, width, height) ? 0 : 1;
                 break;
