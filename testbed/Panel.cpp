@@ -32,7 +32,7 @@ void knobs(Simulation& sim) {
     bool changed = ImGui::Combo("integrator", &integrator, kIntegrators, IM_ARRAYSIZE(kIntegrators));
     k.integrator = Integrator(integrator + int(INTEGRATOR_SemiImplicitEuler));
     changed |= ImGui::SliderInt("step rate (Hz)", &k.stepRate, 10, 480);
-    changed |= ImGui::SliderInt("solver iterations", &k.solverIterations, 1, 50);
+    changed |= ImGui::SliderInt("iterations", &k.solverIterations, 1, 50);
     changed |= ImGui::SliderInt("samples / s", &k.samplesPerSecond, 0, 240);
     int space = k.octree ? 1 : 0;
     changed |= ImGui::RadioButton("simple space", &space, 0);
@@ -49,7 +49,7 @@ void knobs(Simulation& sim) {
 
 void drawPanel(PanelState& state, Simulation& sim, float fps) {
     ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_FirstUseEver);
-    ImGui::SetNextWindowSize(ImVec2(340, 0), ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowSize(ImVec2(360, 0), ImGuiCond_FirstUseEver);
     ImGui::Begin("Guardian testbed");
     if (ImGui::CollapsingHeader("scene", ImGuiTreeNodeFlags_DefaultOpen)) {
         const auto& scenes = testbedScenes();

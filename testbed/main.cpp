@@ -86,13 +86,17 @@ int parse(int argc, char** argv, Options& o) {
     return 0;
 }
 
-// Looks at the middle of the scene's bodies from the front, above and to the left.
-void frameScene(const Simulation& sim, OrbitCamera& camera) {
+// Looks at the middle of the scene's bodies from the front, above and to the left; with the panel on the
+// left, the scene moves right to keep clear of it.
+void frameScene(const Simulation& sim, OrbitCamera& camera, bool panel) {
     Vector lo(-3, 0, -3), hi(3, 3, 3);
     sim.bounds(lo, hi);
     const Vector centre = (lo + hi) * 0.5f;
     const float size = std::max(3.0f, (hi - lo).length());
-    camera.lookAt(centre + normal(Vector(-0.5f, 0.45f, -1.0f)) * (size * 1.3f + 4.0f), centre);
+    const Vector eye = centre + normal(Vector(-0.5f, 0.45f, -1.0f)) * (size * 1.3f + 4.0f);
+    const Vector right = normal(cross(Vector(0, 1, 0), centre - eye));
+    const Vector shift = panel ? right * (-0.3f * size) : Vector();
+    camera.lookAt(eye + shift, centre + shift);
 }
 
 int indexOf(const SceneSpec* spec) {
@@ -145,7 +149,7 @@ int main(int argc, char** argv) {
         if (o.haveEye)
             camera.lookAt(o.eye, o.target);
         else
-            frameScene(sim, camera);
+            frameScene(sim, camera, o.ui);
         PanelState state;
         state.scene = indexOf(spec);
         GlDebugDraw draw;
@@ -165,7 +169,7 @@ int main(int argc, char** argv) {
                 state.scene = state.sceneRequested;
                 state.sceneRequested = -1;
                 sim.load(testbedScenes()[size_t(state.scene)]);
-                frameScene(sim, camera);
+                frameScene(sim, camera, o.ui);
             }
             if (state.resetRequested) sim.reset();
             if (state.stepRequested) {
