@@ -99,6 +99,9 @@ void frameScene(const Simulation& sim, OrbitCamera& camera, bool panel) {
     camera.lookAt(eye + shift, centre + shift);
 }
 
+// The background: tests/testbed/CMakeLists.txt gives the screenshot checker the same colour (1A1F2E).
+const float kClear[3] = {0.10f, 0.12f, 0.18f};
+
 int indexOf(const SceneSpec* spec) {
     const auto& scenes = testbedScenes();
     for (size_t i = 0; i < scenes.size(); ++i)
@@ -120,6 +123,7 @@ int main(int argc, char** argv) {
         return 2;
     }
     const bool headless = o.frames > 0;
+    glfwSetErrorCallback([](int, const char* what) { std::fprintf(stderr, "Testbed: GLFW: %s\n", what); });
     if (!glfwInit()) {
         std::fputs("Testbed: cannot open a window (no display?)\n", stderr);
         return 3;
@@ -184,7 +188,7 @@ int main(int argc, char** argv) {
             if (sim.spring().holding())
                 draw.drawLine(sim.spring().anchor(), sim.spring().target(), 0xFFFFFFFFu);
             glViewport(0, 0, width, height);
-            glClearColor(0.10f, 0.12f, 0.18f, 1.0f);
+            glClearColor(kClear[0], kClear[1], kClear[2], 1.0f);
             glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
             draw.render(camera.glViewProjection(width, height));
             drawDebugTexts(draw, camera, width, height);
@@ -194,6 +198,7 @@ int main(int argc, char** argv) {
                 char name[32];
                 std::snprintf(name, sizeof name, "testbed-%03d.png", ++screenshots);
                 if (writeScreenshot(name, width, height)) std::printf("Testbed: wrote %s\n", name);
+                std::fflush(stdout);
                 state.screenshotRequested = false;
             }
             if (headless && frame >= o.frames) {
