@@ -9,13 +9,21 @@
 #include <imgui.h>
 
 #include <cmath>
+#include <vector>
 
 namespace {
 const float kRadiansPerPixel = 0.006f;
 const float kZoomPerNotch = 0.88f;
 const float kClickPixels = 4.0f; // a right button that moved less than this clicked (shoots), else dragged
 bool g_orbiting = false;         // the left drag that started on empty space turns the camera
+std::vector<int> g_keys;         // keys pressed (or repeating) since the last frame, in order
 } // namespace
+
+void latchKeys(GLFWwindow* window) {
+    glfwSetKeyCallback(window, [](GLFWwindow*, int key, int, int action, int) {
+        if (action != GLFW_RELEASE) g_keys.push_back(key);
+    });
+}
 
 void handleInput(PanelState& state, Simulation& sim, OrbitCamera& camera, int width, int height) {
     ImGuiIO& io = ImGui::GetIO();
@@ -44,10 +52,12 @@ void handleInput(PanelState& state, Simulation& sim, OrbitCamera& camera, int wi
     }
     if (!ImGui::IsMouseDown(ImGuiMouseButton_Left)) g_orbiting = false;
 
-    if (!io.WantCaptureKeyboard) {
-        if (ImGui::IsKeyPressed(GLFW_KEY_SPACE, false)) state.paused = !state.paused;
-        if (ImGui::IsKeyPressed(GLFW_KEY_N)) state.stepRequested = true;
-        if (ImGui::IsKeyPressed(GLFW_KEY_R, false)) state.resetRequested = true;
-        if (ImGui::IsKeyPressed(GLFW_KEY_F12, false)) state.screenshotRequested = true;
+    for (int key : g_keys) {
+        if (io.WantCaptureKeyboard) break;
+        if (key == GLFW_KEY_SPACE) state.paused = !state.paused;
+        if (key == GLFW_KEY_N) state.stepRequested = true; // held: one step per repeat
+        if (key == GLFW_KEY_R) state.resetRequested = true;
+        if (key == GLFW_KEY_F12) state.screenshotRequested = true;
     }
+    g_keys.clear();
 }
