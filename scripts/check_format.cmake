@@ -1,7 +1,7 @@
 # Fails when any of our C++ sources differs from what clang-format (with .clang-format) would write.
 # Run as: cmake -DROOT=<repo> -DCLANG_FORMAT=<clang-format> -P scripts/check_format.cmake
 cmake_minimum_required(VERSION 3.20)
-set(dirs Interfaces Physics Collision Framework ReferenceGame tests bench packages)
+set(dirs Interfaces Physics Collision Framework ReferenceGame testbed tests bench packages)
 set(files "")
 foreach(d ${dirs})
   file(GLOB_RECURSE found "${ROOT}/${d}/*.h" "${ROOT}/${d}/*.cpp")
