@@ -9,7 +9,7 @@ void buildProbe(World& world) { world.fixedBox(kProbeCentre, kProbeHalfExtents);
 
 const std::vector<SceneSpec>& testbedScenes() {
     static const std::vector<SceneSpec> scenes = [] {
-        std::vector<SceneSpec> all = allScenes();
+        std::vector<SceneSpec> all(allScenes().begin(), allScenes().end());
         all.push_back({"probe", "one fixed box at a known place (the screenshot test)", buildProbe, nullptr});
         return all;
     }();
