@@ -6,6 +6,8 @@
 #include "Simulation.h"
 #include "TestbedScenes.h"
 
+#include "iPhysicsSceneProfile.h"
+
 #include <imgui.h>
 
 namespace {
@@ -25,6 +27,28 @@ const FlagName kFlags[] = {
     {DEBUGDRAW_Islands, "islands"},
     {DEBUGDRAW_BodyAxes, "body axes"},
 };
+
+// Where the scene's step time went (iPhysicsSceneProfile): ms per phase, summed over the update's steps.
+void phases(Simulation& sim) {
+    const iPhysicsSceneProfile* profile = sim.scene() ? profileOf(sim.scene()) : nullptr;
+    if (!profile) return;
+    const PhysicsProfile& p = profile->getProfile();
+    const struct {
+        const char* name;
+        double seconds;
+    } rows[] = {{"updaters", p.updaters},
+                {"edits", p.edits},
+                {"collision", p.collision},
+                {"islands", p.islands},
+                {"integration", p.integration},
+                {"solver", p.solver},
+                {"continuous", p.continuous},
+                {"sleeping", p.sleeping},
+                {"events", p.events}};
+    ImGui::Text("%d steps, %.3f ms in all", p.steps, p.total * 1000.0);
+    for (const auto& r : rows) ImGui::Text("  %-12s %8.3f ms", r.name, r.seconds * 1000.0);
+    ImGui::Text("pairs %zu   solver rows %zu", p.touchingPairs, p.solverRows);
+}
 
 void knobs(Simulation& sim) {
     Knobs k = sim.knobs();
@@ -73,6 +97,8 @@ void drawPanel(PanelState& state, Simulation& sim, float fps) {
         ImGui::Text("update() %.3f ms (%d steps)   %.0f fps", sim.lastUpdateMs(), sim.stepsLastFrame(),
                     double(fps));
     }
+    if (ImGui::CollapsingHeader("phases (last update that stepped)", ImGuiTreeNodeFlags_DefaultOpen))
+        phases(sim);
     ImGui::TextDisabled("drag: turn (on a body: pull it)  wheel: zoom");
     ImGui::TextDisabled("right click: shoot a sphere");
     ImGui::End();
