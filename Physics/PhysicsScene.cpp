@@ -220,6 +220,7 @@ void PhysicsScene::update(int now) {
     }
     if (!m_deleteRequested) deliverCollisionEvents(); // HitWall once a frame per touching pair
     m_profiler.lap(&PhysicsProfile::events);
+    countProfile();
     m_profiler.endUpdate();
     if (m_deleteRequested) {
         delete this;
@@ -347,19 +348,21 @@ void PhysicsScene::step(float dt) {
     // 10. Removals and deletions requested during the step.
     ++m_steps;
     flushDeferred();
-    countStep(contactCount, solving);
+    m_profiler.current().steps += 1;
+    m_profiler.current().contacts = contactCount;
+    m_lastStepSolved = solving;
     m_profiler.lap(&PhysicsProfile::sleeping);
 }
 
-void PhysicsScene::countStep(size_t contacts, bool solved) {
+// The profile's counts, once an update, after its last step (nothing of this runs per step).
+void PhysicsScene::countProfile() {
     PhysicsProfile& p = m_profiler.current();
-    p.steps += 1;
+    if (p.steps == 0) return;
     p.bodies = m_bodies.size();
     p.awakeBodies = getAwakeBodyCount();
-    p.contacts = contacts;
-    p.touchingPairs = solved ? m_solver.manifolds().size() : 0;
+    p.touchingPairs = m_lastStepSolved ? m_solver.manifolds().size() : 0;
     p.solverRows = 0;
-    if (solved)
+    if (m_lastStepSolved)
         for (const Manifold& m : m_solver.manifolds()) p.solverRows += 3 * size_t(m.count);
 }
 

@@ -105,7 +105,7 @@ private:
     void runFixedUpdaters(float dt);
     // The space's contacts at the current poses (none when it was replaced since spaceVersion).
     void findContacts(float dt, unsigned spaceVersion, const CollisionContact*& contacts, size_t& count);
-    void countStep(size_t contacts, bool solved); // the profile's counts after a step
+    void countProfile(); // the profile's counts after an update's steps
     // Forces on a composite over dt: moves it, or (one the contact solver moves) hands the solver its
     // velocities.
     void integrateComposite(RigidBody* root, float dt);
@@ -154,6 +154,7 @@ private:
     ContinuousStage m_continuous;
     bool m_continuousOn = true;
     StepProfiler m_profiler;
+    bool m_lastStepSolved = false; // the solver ran in the last step (its manifolds are that step's)
 };
 
 } // namespace physics
