@@ -62,6 +62,21 @@ Quat rotateMidpoint(const Composite& c, const Quat& q, const Vec3& L, float dt) 
     return rotateBy(q, worldInverseInertia(c, half) * L, dt);
 }
 
+// The smallest rotation taking the direction of `from` to that of `to` (Eigen's FromTwoVectors, written out:
+// Eigen's solves an SVD for opposite vectors, and instantiating it took 13 s of every build of this file).
+Eigen::Quaterniond shortestArc(const Eigen::Vector3d& from, const Eigen::Vector3d& to) {
+    const Eigen::Vector3d a = from.normalized(), b = to.normalized();
+    const double c = b.dot(a);
+    if (c < -1 + 1e-12) { // opposite: a half turn about any axis perpendicular to both
+        Eigen::Vector3d other = std::fabs(a.x()) < 0.9 ? Eigen::Vector3d::UnitX() : Eigen::Vector3d::UnitY();
+        const Eigen::Vector3d axis = a.cross(other).normalized();
+        return Eigen::Quaterniond(0, axis.x(), axis.y(), axis.z());
+    }
+    const double s = std::sqrt((1 + c) * 2);
+    const Eigen::Vector3d v = a.cross(b) * (1 / s);
+    return Eigen::Quaterniond(0.5 * s, v.x(), v.y(), v.z());
+}
+
 // Turns q, the end of a rotation step taken from qStart at constant momentum L, so that the body-frame
 // momentum b = R^T L lies where it started on the energy ellipsoid: 1/2 b . I^-1 b = E(qStart). |b| = |L|
 // already, so b is moved within its sphere along the energy's gradient (Newton steps, at most a quarter of
@@ -94,7 +109,7 @@ Quat keepRotationalEnergy(const Composite& c, const Quat& qStart, const Quat& q,
         if (move > 0.25 * r) t *= 0.25 * r / move;
         b = (b + t * g).normalized() * r;
     }
-    return (q * Quat(Eigen::Quaterniond::FromTwoVectors(b, end).cast<float>())).normalized();
+    return (q * Quat(shortestArc(b, end).cast<float>())).normalized();
 }
 
 void explicitEuler(const Composite& c, MotionState& s, float dt) {
