@@ -10,6 +10,7 @@
 #include "Shapes.h"
 #include "iCollisionGeometry.h"
 #include "iCollisionSpace.h"
+#include "iUserPointer.h"
 
 #include <vector>
 
@@ -87,7 +88,8 @@ private:
 };
 
 // Implements the iCollisionGeometry functions every concrete geometry shares.
-template <class Interface> class GeometryImpl : public Interface, public CollisionGeometry {
+template <class Interface>
+class GeometryImpl : public Interface, public CollisionGeometry, public iUserPointer {
 public:
     void attach(iRigidBody* rb) override { bind(rb); }
     iRigidBody* getRigidBody() override { return body(); }
@@ -113,4 +115,10 @@ public:
     void suspend() const override {}
     void release() const override {}
     void Delete() const override { destroy(); }
+    // --- iUserPointer ---
+    void setUserPointer(void* p) override { m_userPointer = p; }
+    void* getUserPointer() const override { return m_userPointer; }
+
+private:
+    void* m_userPointer = nullptr;
 };

@@ -43,8 +43,8 @@ bool PhysicsScene::add(iRigidBody* o) {
         return false;
     }
     if (b->scene() == this) {
-        if (b->pendingRemoval) { // removed and re-added within one step: it simply stays
-            b->pendingRemoval = false;
+        if (b->pendingRemoval) { // removed and re-added within one step: it simply stays (unless killed)
+            if (b->isAlive()) b->pendingRemoval = false;
             return true;
         }
         error(L"PhysicsScene::add: the body is already in this scene");
@@ -58,6 +58,7 @@ bool PhysicsScene::add(iRigidBody* o) {
     m_byDynamics[&b->getDynamics()] = b;
     ++m_membership;
     b->setScene(this);
+    if (!b->isAlive()) deferRemove(b); // killed and not resetAlive(): removed again (iLifetime.h)
     return true;
 }
 
@@ -73,7 +74,7 @@ void PhysicsScene::remove(const iRigidBody* o) {
     }
     if (b->dying()) return; // already leaving
     if (m_busy) {
-        b->pendingRemoval = true;
+        deferRemove(b);
         return;
     }
     forget(b);

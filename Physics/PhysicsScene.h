@@ -91,7 +91,10 @@ public:
     // --- the bodies' side ---
     bool busy() const { return m_busy; } // inside update(): removals and deletions are deferred
     // b (of any scene, or of none) is deleted at the end of this scene's current step.
-    void deferDelete(RigidBody* b) { m_deferredDeletes.push_back(b); }
+    void deferDelete(RigidBody* b) { m_leaving.push_back({b, Leave::Delete}); }
+    // b, one of this scene's bodies, is skipped from now on and leaves the scene at the end of the current
+    // step (of the next one between steps): remove() during a step, kill().
+    void deferRemove(RigidBody* b);
     void forget(RigidBody* b); // b is being destroyed now: drop every reference to it
     // The body of this scene whose dynamics d is, or nullptr.
     RigidBody* bodyOf(const RBDynamics* d) const {
@@ -123,7 +126,10 @@ private:
 
     std::vector<RigidBody*> m_bodies;
     std::unordered_map<const RBDynamics*, RigidBody*> m_byDynamics;
-    std::vector<RigidBody*> m_deferredDeletes;
+    // What the end of the step does, last queued first: every deferred removal and deletion
+    // (SceneLifetime.cpp).
+    enum class Leave { Remove, Delete };
+    std::vector<std::pair<RigidBody*, Leave>> m_leaving;
     std::vector<iFixedUpdater*> m_updaters;      // nullptr: removed during a step, compacted after it
     std::vector<PhysicsScene*> m_deferredScenes; // deleted from callbacks of this scene's update
     iCollisionSpace* m_space = nullptr;

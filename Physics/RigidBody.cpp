@@ -128,6 +128,12 @@ void RigidBody::Delete() const {
     self->destroy();
 }
 
+void RigidBody::kill() {
+    if (m_dying) return; // being deleted: it leaves anyway
+    m_alive = false;
+    if (m_scene) m_scene->deferRemove(this);
+}
+
 void RigidBody::destroy() {
     if (m_scene) m_scene->forget(this);
     delete this;

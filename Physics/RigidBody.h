@@ -8,8 +8,10 @@
 
 #include "MathBridge.h"
 #include "RBDynamics.h"
+#include "iLifetime.h"
 #include "iRigidBody.h"
 #include "iRigidBodyMotion.h"
+#include "iUserPointer.h"
 
 #include <vector>
 
@@ -21,7 +23,7 @@ namespace physics {
 
 class PhysicsScene;
 
-class RigidBody final : public iRigidBody, public iRigidBodyMotion {
+class RigidBody final : public iRigidBody, public iRigidBodyMotion, public iLifetime, public iUserPointer {
 public:
     explicit RigidBody(iFrame* frame);
     RigidBody(const RigidBody&) = delete;
@@ -47,6 +49,13 @@ public:
     bool teleport(const Vector& position, const Matrix& orientation) override;
     bool moveTo(const Vector& position, const Matrix& orientation, float seconds) override;
     void wake() override;
+
+    // --- iLifetime (the scene's deferred removal), iUserPointer ---
+    void kill() override;
+    bool isAlive() const override { return m_alive; }
+    void resetAlive() override { m_alive = true; }
+    void setUserPointer(void* p) override { m_userPointer = p; }
+    void* getUserPointer() const override { return m_userPointer; }
 
     // --- the scene's side ---
     PhysicsScene* scene() const { return m_scene; }
@@ -83,7 +92,7 @@ public:
     // drawn now).
     void writeFrameAfterParent(float alpha, unsigned long long round);
     static unsigned long long newFrameRound();
-    bool pendingRemoval = false; // remove() during a step: skipped now, removed when the step ends
+    bool pendingRemoval = false; // remove() during a step, or kill(): skipped now, removed when the step ends
     // The world pose (COM, rotation) at the start of the current step.
     const Vector& previousPosition() const { return m_prevPosition; }
     const Quat& previousRotation() const { return m_prevRotation; }
@@ -164,6 +173,8 @@ private:
     PhysicsScene* m_scene = nullptr;
     iPhysicsFrame* m_owner = nullptr;
     bool m_dying = false;
+    bool m_alive = true;
+    void* m_userPointer = nullptr;
     unsigned long long m_frameRound = 0;
     void cacheWorldPose() const;
     mutable unsigned long long m_poseRound = 0; // the cache round m_worldPos and m_worldRot belong to

@@ -91,25 +91,31 @@ void PhysicsScene::forget(RigidBody* b) {
     ++m_membership;
     m_bodies.erase(std::remove(m_bodies.begin(), m_bodies.end(), b), m_bodies.end());
     m_byDynamics.erase(&b->getDynamics());
-    m_deferredDeletes.erase(std::remove(m_deferredDeletes.begin(), m_deferredDeletes.end(), b),
-                            m_deferredDeletes.end());
+    m_leaving.erase(std::remove_if(m_leaving.begin(), m_leaving.end(),
+                                   [b](const std::pair<RigidBody*, Leave>& e) { return e.first == b; }),
+                    m_leaving.end());
 }
 
+void PhysicsScene::deferRemove(RigidBody* b) {
+    if (b->pendingRemoval) return;
+    b->pendingRemoval = true;
+    m_leaving.push_back({b, Leave::Remove});
+}
+
+// Last queued first, so that a body killed and then deleted in one step is deleted (its forget() drops the
+// removal still queued). A removal that add() took back since (pendingRemoval cleared) is skipped.
 void PhysicsScene::flushDeferred() {
-    while (!m_deferredDeletes.empty()) {
-        RigidBody* b = m_deferredDeletes.back();
-        m_deferredDeletes.pop_back(); // b may be another scene's: its forget() does not touch this list
-        b->destroy();
-    }
-    for (size_t i = 0; i < m_bodies.size();) {
-        RigidBody* b = m_bodies[i];
-        if (!b->pendingRemoval) {
-            ++i;
-            continue;
+    while (!m_leaving.empty()) {
+        const std::pair<RigidBody*, Leave> next = m_leaving.back();
+        m_leaving.pop_back(); // a body of another scene: its forget() does not touch this list
+        RigidBody* b = next.first;
+        if (next.second == Leave::Delete) {
+            b->destroy();
+        } else if (b->pendingRemoval && b->scene() == this) {
+            b->pendingRemoval = false;
+            forget(b);
+            b->setScene(nullptr);
         }
-        b->pendingRemoval = false;
-        forget(b);
-        b->setScene(nullptr);
     }
     m_updaters.erase(std::remove(m_updaters.begin(), m_updaters.end(), nullptr), m_updaters.end());
 }

@@ -1,6 +1,7 @@
 // FuzzCalls.cpp - the fuzz walk's calls on live objects: dynamics, scene membership and settings, updates
 // and time, geometry edits, callbacks and queries (World.h).
 #include "World.h"
+#include "iLifetime.h"
 
 namespace fuzz {
 
@@ -87,10 +88,20 @@ void World::sceneMembership() {
     iPhysicsScene* s = any(m_scenes);
     iRigidBody* b = anyBody();
     if (!s || !b) return;
-    if (pick(2))
+    switch (pick(4)) {
+    case 0:
         s->add(b);
-    else
+        break;
+    case 1:
         s->remove(b);
+        break;
+    case 2:
+        lifetimeOf(b)->kill(); // every body here is the simulator's (CreateRigidBody, clones, frames)
+        break;
+    default:
+        lifetimeOf(b)->resetAlive();
+        break;
+    }
 }
 
 void World::update(Where where) {
