@@ -29,6 +29,7 @@ RBDynamics& RBDynamics::operator=(const RBDynamics& src) {
     temporalForce = src.temporalForce;
     mass = src.mass;
     dragCoefficient = src.dragCoefficient;
+    angularDrag = src.angularDrag;
     restitution = src.restitution;
     friction = src.friction;
     com = src.com;
@@ -266,6 +267,17 @@ void RBDynamics::ApplyImpulse(const Vector& impulse, const Vector& point) {
     root->velocity += impulse * RECIP(mp.mass) + cross(dOmega, root->position - mp.centre);
     root->angularMomentum += dL;
     root->angularVelocity = root->angularMomentum * mp.inverseInertia;
+}
+
+void RBDynamics::ApplyForce(const Vector& force, const Vector& point) {
+    if (!force.isFinite() || !point.isFinite()) {
+        error(L"RBDynamics::ApplyForce: non-finite force or point refused");
+        return;
+    }
+    // Through the part's own centre of mass plus the couple: the integrator adds (part - C) x F for a part
+    // of a composite, so the total moment about C is (point - C) x F.
+    temporalForce += force;
+    temporalTorque += cross(point - getWorldPosition(), force);
 }
 
 RBDynamics::MassProperties RBDynamics::getCompositeMassProperties() const {

@@ -74,6 +74,10 @@ struct RBDynamics {
     // Quadratic drag F = -1/2 rho Cd A |v| v through the COM, with air density rho = 1.2 kg/m^3 and reference
     // area A = 1 m^2 (fold a body's real area into Cd). Terminal speed: sqrt(2 m g / (rho Cd A)). >= 0.
     float dragCoefficient = 0.0f;
+    // Angular drag (1/s): the spin's angular momentum decays as e^(-angularDrag t), a torque -angularDrag L
+    // taken exactly over each step (stable at any value). 0: none; >= 0. On an attachment chain the root's
+    // value acts on the whole composite.
+    float angularDrag = 0.0f;
     float restitution = 0.5f; // 1 superball (keeps all energy), 0 clay (keeps none); outside [0, 1]: refused
     float friction = 0.25f;   // a contact's coefficient is the sum of both bodies' values (seed rule); >= 0
     Vector com;               // centre-of-mass offset from the body frame's origin, in body-local axes
@@ -155,6 +159,12 @@ struct RBDynamics {
     // Instantly changes linear and angular velocity (and momentum) by an impulse (N s) applied at a world
     // point. On an attached body it acts on the whole composite. Non-finite input is refused with error().
     void ApplyImpulse(const Vector& impulse, const Vector& pointOfApplication);
+    // A force (N) at a world point, for the next step only: adds it to temporalForce and its moment about
+    // this body's centre of mass, (point - getWorldPosition()) x force, to temporalTorque. On an attached
+    // body the composite feels the moment about its own centre of mass, as a force through that point would
+    // give. Call it before each step it should act in (a fixed updater), or set force/torque for a lasting
+    // one. Non-finite input is refused with error().
+    void ApplyForce(const Vector& force, const Vector& pointOfApplication);
 
     // --- attachment chains ("coming in next update" in the seed) ---
     // Attaches this body to p, keeping its world pose; nullptr detaches (the body keeps the world velocity it

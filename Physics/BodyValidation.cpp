@@ -36,6 +36,7 @@ const wchar_t* checkDynamics(RBDynamics& d, const Matrix& knownInertia, const Ma
     if (!validMass(d.mass)) return L"mass must be > 0 (or INFINITE_MASS)";
     if (!finite(d.dragCoefficient) || d.dragCoefficient < 0.0f)
         return L"dragCoefficient must be finite, >= 0";
+    if (!finite(d.angularDrag) || d.angularDrag < 0.0f) return L"angularDrag must be finite, >= 0";
     // Outside these ranges a contact makes energy: restitution 50 sent a ball dropped from 2 m to 1,089 m,
     // friction -1 sped a box sliding at 2 m/s up to 21 m/s.
     if (!(d.restitution >= 0.0f && d.restitution <= 1.0f)) return L"restitution must be in [0, 1]";

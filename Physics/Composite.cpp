@@ -32,6 +32,7 @@ void buildComposite(RigidBody* rootBody, const std::unordered_map<const RBDynami
     out.kinematic = false;
     out.hasGenerators = false;
     out.gravity = root->physicsType == PHYS_Falling ? gravity : Vec3::Zero();
+    out.angularDrag = root->angularDrag;
 
     // Place every part relative to the root: a child stores its pose relative to its parent's COM and
     // orientation, p_world = R_parent p + P_parent (column form), so the same recursion holds in root axes.

@@ -34,6 +34,7 @@ struct Composite {
     Vec3 gravity = Vec3::Zero();                                    // zero unless the root is PHYS_Falling
     bool kinematic = false; // some part has INFINITE_MASS: forces do nothing, velocities are kept
     bool hasGenerators = false;
+    float angularDrag = 0; // the root's RBDynamics::angularDrag (1/s)
     std::vector<CompositePart> parts;
 };
 

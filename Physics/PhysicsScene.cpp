@@ -413,6 +413,7 @@ void PhysicsScene::integrateComposite(RigidBody* body, float dt) {
                       toEigen(d.angularMomentum), q};
         const Vec3 v0 = s.v;
         integrate(m_integrator, c, s, dt, omega);
+        if (c.angularDrag > 0 && !c.kinematic) s.L *= std::exp(-c.angularDrag * dt); // exact decay, any value
         Vec3 omega1 = c.kinematic ? omega : Vec3(worldInverseInertia(c, s.q) * s.L);
         body->forceDv = s.v - v0;
         body->forceDw = omega1 - omega;
