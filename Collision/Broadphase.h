@@ -30,4 +30,6 @@ public:
                                const Vector& dir, float maxT, std::vector<CollisionGeometry*>& out) = 0;
     // g is leaving the space (its space state still names its proxy).
     virtual void forget(CollisionGeometry* g) = 0;
+    // The space's length units per metre (iCollisionSpaceScale.h), for a broadphase with a margin.
+    virtual void setLengthUnit(float) {}
 };

@@ -53,7 +53,7 @@ int clipPolygon(const ClipVertex* in, int n, const Vector& normal, float limit, 
 
 } // namespace
 
-int collideBoxBox(const BoxShape& a, const BoxShape& b, ContactManifold& out) {
+int collideBoxBox(const BoxShape& a, const BoxShape& b, ContactManifold& out, float lengthUnit) {
     out.count = 0;
     const Vector d = b.centre - a.centre;
     // R[i][j] = a_i . b_j and d in a's frame: every axis's projections follow from these 12 numbers.
@@ -66,6 +66,7 @@ int collideBoxBox(const BoxShape& a, const BoxShape& b, ContactManifold& out) {
     const float t[3] = {dot(d, a.axis[0]), dot(d, a.axis[1]), dot(d, a.axis[2])};
     const float ha[3] = {a.halfExtents.x, a.halfExtents.y, a.halfExtents.z};
     const float hb[3] = {b.halfExtents.x, b.halfExtents.y, b.halfExtents.z};
+    const float edgeBias = 1e-4f * lengthUnit;
     float best = 3.4e38f, bestSign = 1.0f;
     int bestIdx = -1;
     // overlap = ra + rb - |dist| along an axis of length len (normalised here, so every overlap is a
@@ -74,11 +75,12 @@ int collideBoxBox(const BoxShape& a, const BoxShape& b, ContactManifold& out) {
         float overlap = (ra + rb - std::fabs(dist)) / len;
         // Separated, or a NaN from an overflowed pose or size (inf - inf): no contact either way.
         if (!(overlap >= 0.0f)) return false;
-        // Face axes win ties (a stable manifold); an edge axis must be clearly shallower: by 2 % and 0.1 mm.
+        // Face axes win ties (a stable manifold); an edge axis must be clearly shallower: by 2 % and 0.1 mm
+        // (in the world's length unit).
         // Between nearly parallel faces an edge axis is often a hair shallower, and taking it reported one
         // point instead of the overlap area (800 of 2000 resting dominoes in the narrowphase test). The
         // depth stays within the 3 % of the minimum translation that the GJK reference test allows.
-        bool better = idx < 6 ? overlap < best : overlap < best * 0.98f - 1e-4f;
+        bool better = idx < 6 ? overlap < best : overlap < best * 0.98f - edgeBias;
         if (better) {
             best = overlap;
             bestIdx = idx;

@@ -84,7 +84,7 @@ bool SimpleCollisionSpace::testAtPoses(const Entry& a, const Entry& b, float t, 
     gcol::ContactManifold m;
     for (int i = fa; i < la; ++i)
         for (int j = fb; j < lb; ++j) {
-            if (gcol::collideShapes((*sa)[size_t(i)], (*sb)[size_t(j)], m) == 0) continue;
+            if (gcol::collideShapes((*sa)[size_t(i)], (*sb)[size_t(j)], m, m_lengthUnit) == 0) continue;
             emit(a, b, m, unsigned((i - fa) << 9 | (j - fb)), tag);
             any = true;
         }

@@ -5,29 +5,30 @@
 namespace gcol {
 namespace {
 
-using PairFn = int (*)(const WorldShape&, const WorldShape&, ContactManifold&);
+using PairFn = int (*)(const WorldShape&, const WorldShape&, ContactManifold&, float lengthUnit);
 
-int sphereSphere(const WorldShape& a, const WorldShape& b, ContactManifold& m) {
+int sphereSphere(const WorldShape& a, const WorldShape& b, ContactManifold& m, float) {
     return collideSphereSphere(a.sphere, b.sphere, m);
 }
-int sphereBox(const WorldShape& a, const WorldShape& b, ContactManifold& m) {
+int sphereBox(const WorldShape& a, const WorldShape& b, ContactManifold& m, float) {
     return collideSphereBox(a.sphere, b.box, m);
 }
-int boxBox(const WorldShape& a, const WorldShape& b, ContactManifold& m) {
-    return collideBoxBox(a.box, b.box, m);
+int boxBox(const WorldShape& a, const WorldShape& b, ContactManifold& m, float lengthUnit) {
+    return collideBoxBox(a.box, b.box, m, lengthUnit);
 }
-int planeSphere(const WorldShape& a, const WorldShape& b, ContactManifold& m) {
+int planeSphere(const WorldShape& a, const WorldShape& b, ContactManifold& m, float) {
     return collidePlaneSphere(a.plane, b.sphere, m);
 }
-int planeBox(const WorldShape& a, const WorldShape& b, ContactManifold& m) {
+int planeBox(const WorldShape& a, const WorldShape& b, ContactManifold& m, float) {
     return collidePlaneBox(a.plane, b.box, m);
 }
-int none(const WorldShape&, const WorldShape&, ContactManifold& m) { return m.count = 0; }
+int none(const WorldShape&, const WorldShape&, ContactManifold& m, float) { return m.count = 0; }
 
 // The function for (kind a, kind b) with a <= b in the order Sphere, Box, Plane ... except that the plane
 // functions take the plane first; flipped[] says which entries need their arguments swapped.
-template <PairFn F> int flipped(const WorldShape& a, const WorldShape& b, ContactManifold& m) {
-    int n = F(b, a, m);
+template <PairFn F>
+int flipped(const WorldShape& a, const WorldShape& b, ContactManifold& m, float lengthUnit) {
+    int n = F(b, a, m, lengthUnit);
     for (int i = 0; i < n; ++i) m.points[i].normal = -m.points[i].normal;
     return n;
 }
@@ -40,8 +41,8 @@ const PairFn kTable[kShapeKinds][kShapeKinds] = {
 
 } // namespace
 
-int collideShapes(const WorldShape& a, const WorldShape& b, ContactManifold& out) {
-    return kTable[int(a.kind)][int(b.kind)](a, b, out);
+int collideShapes(const WorldShape& a, const WorldShape& b, ContactManifold& out, float lengthUnit) {
+    return kTable[int(a.kind)][int(b.kind)](a, b, out, lengthUnit);
 }
 
 bool shapeAabb(const WorldShape& s, Aabb& out) {

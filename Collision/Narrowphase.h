@@ -13,13 +13,14 @@ int collideSphereSphere(const SphereShape& a, const SphereShape& b, ContactManif
 int collideSphereBox(const SphereShape& a, const BoxShape& b, ContactManifold& out);
 // Separating axis theorem over the 15 axes (normalised; near-parallel edge pairs skipped), then a manifold
 // of up to 4 points by clipping the incident face against the reference face (or one edge-edge point).
-int collideBoxBox(const BoxShape& a, const BoxShape& b, ContactManifold& out);
+// lengthUnit: the world's length units per metre (iCollisionSpaceScale.h), for the edge axes' 0.1 mm bias.
+int collideBoxBox(const BoxShape& a, const BoxShape& b, ContactManifold& out, float lengthUnit = 1.0f);
 int collidePlaneSphere(const PlaneShape& a, const SphereShape& b, ContactManifold& out);
 int collidePlaneBox(const PlaneShape& a, const BoxShape& b, ContactManifold& out);
 
 // Any two shapes (mirrored pairs are computed once and flipped: normals negated, features kept).
-// Two planes never collide (both are static).
-int collideShapes(const WorldShape& a, const WorldShape& b, ContactManifold& out);
+// Two planes never collide (both are static). lengthUnit as for collideBoxBox.
+int collideShapes(const WorldShape& a, const WorldShape& b, ContactManifold& out, float lengthUnit = 1.0f);
 
 // Ray cast: origin + t * dir (dir unit), 0 <= t <= maxT. On a hit sets t, the surface normal (pointing out
 // of the shape, toward the ray's origin side) and returns true. A ray starting inside reports t = 0 and

@@ -259,6 +259,17 @@ bool SimpleCollisionSpace::setContactBudget(size_t maxContacts) {
     return true;
 }
 
+bool SimpleCollisionSpace::setLengthUnitsPerMetre(float unitsPerMetre) {
+    if (!validLengthUnit(unitsPerMetre)) {
+        error(L"iCollisionSpaceScale::setLengthUnitsPerMetre: the unit must be 1e-3..1e3 length units per "
+              L"metre; unchanged");
+        return false;
+    }
+    m_lengthUnit = unitsPerMetre;
+    m_broadphase->setLengthUnit(unitsPerMetre);
+    return true;
+}
+
 extern "C" iCollisionSpace* CreateSimpleCollisionSpace(size_t samplesPerSecond) {
     return new SimpleCollisionSpace(samplesPerSecond, std::make_unique<SweepAndPrune>());
 }

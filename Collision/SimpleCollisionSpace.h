@@ -23,6 +23,7 @@
 #include "iCollisionEvents.h"
 #include "iCollisionQueries.h"
 #include "iCollisionSpace.h"
+#include "iCollisionSpaceScale.h"
 #include "iContactBudget.h"
 #include "iContactFeatures.h"
 #include "iDebugDrawable.h"
@@ -46,7 +47,8 @@ class SimpleCollisionSpace final : public iCollisionSpace,
                                    public iContactBudget,
                                    public iShapeCast,
                                    public iSnapshots,
-                                   public iDebugDrawable {
+                                   public iDebugDrawable,
+                                   public iCollisionSpaceScale {
 public:
     SimpleCollisionSpace(size_t samplesPerSecond, std::unique_ptr<Broadphase> broadphase);
 
@@ -80,6 +82,8 @@ public:
     size_t sweepBodies(BodySweep* sweeps, size_t count) override; // SpaceShapeCast.cpp
     // Geometry, bounds and the current contact list (SpaceDebugDraw.cpp).
     void debugDraw(iDebugDraw& out, unsigned flags) const override;
+    bool setLengthUnitsPerMetre(float unitsPerMetre) override;
+    float getLengthUnitsPerMetre() const override { return m_lengthUnit; }
     void suspend() const override {}
     void release() const override {}
     // Geometries are not deleted: they leave the space (and stay usable). Clears the default space if it
@@ -171,6 +175,7 @@ private:
     bool m_reportedDrops = false;
     bool m_cut = false; // the pair being tested lost contacts to the budget
     size_t m_samplesPerSecond;
+    float m_lengthUnit = 1.0f; // length units per metre (iCollisionSpaceScale.h)
     std::unique_ptr<Broadphase> m_broadphase;
     unsigned long long m_joined = 0;     // geometries added so far (SpaceState::order)
     unsigned long long m_membership = 0; // changes with every geometry added or removed (snapshots)

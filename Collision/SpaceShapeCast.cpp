@@ -33,9 +33,10 @@ using Vec3 = Eigen::Vector3f;
 using Mat3 = Eigen::Matrix3f;
 using Quat = Eigen::Quaternionf;
 
-constexpr float kTolerance = 1e-4f; // m: a gap this small is a touch (and a pair this close at the start is
+// Both in metres, times the space's length unit (iCollisionSpaceScale.h).
+constexpr float kTolerance = 1e-4f; // a gap this small is a touch (and a pair this close at the start is
                                     // touching: contact resolution has it)
-constexpr float kSkin = 2e-4f;      // m: how far past the touch the body is left, so that contact detection
+constexpr float kSkin = 2e-4f;      // how far past the touch the body is left, so that contact detection
                                     // sees the pair; under half of the thinnest wall we promise (1 mm)
 constexpr int kMaxIterations = 32;
 constexpr int kUnusable = -2; // a geometry whose body's pose is not finite
@@ -205,6 +206,7 @@ void SimpleCollisionSpace::gatherCandidates(const Vector& lo, const Vector& hi) 
 }
 
 void SimpleCollisionSpace::sweepOne(BodySweep& sweep, int index) {
+    const float tolerance = kTolerance * m_lengthUnit, skin = kSkin * m_lengthUnit;
     const RBDynamics& d = sweep.body->getDynamics();
     const Vec3 p0 = eigen(sweep.startPosition), p1 = eigen(d.position);
     const Quat q0 = quatOf(sweep.startOrientation), q1 = quatOf(d.orientation);
@@ -296,7 +298,7 @@ void SimpleCollisionSpace::sweepOne(BodySweep& sweep, int index) {
                 // Overlapping at the start, or touching without closing fast along the normal (resting,
                 // sliding): contact resolution's. Touching and closing fast (a head-on hit that began at
                 // an exact touch) is a hit at the start.
-                if (iteration == 0 && s <= kTolerance &&
+                if (iteration == 0 && s <= tolerance &&
                     (s < 0.0f || dot(vec(dp) - shift, a) <= 0.25f * minDim)) {
                     m_ignored[i * no + j] = 1;
                     continue;
@@ -305,7 +307,7 @@ void SimpleCollisionSpace::sweepOne(BodySweep& sweep, int index) {
                 // apart along a without turning never touches.
                 const float closing = std::max(0.0f, dot(vec(dp) - shift, a)) + turn;
                 if (!(closing > 0.0f)) continue;
-                if (s <= kTolerance) {
+                if (s <= tolerance) {
                     hit = int(j);
                     gap = s;
                     axis = a;
@@ -322,7 +324,7 @@ void SimpleCollisionSpace::sweepOne(BodySweep& sweep, int index) {
         if (nearest < 0) return;           // nothing it can reach
         if (iteration == kMaxIterations) { // slow convergence: stop here, short of the obstacle
             hit = nearest;
-            gap = -kSkin;
+            gap = -skin;
             break;
         }
         t += advance;
@@ -334,7 +336,7 @@ void SimpleCollisionSpace::sweepOne(BodySweep& sweep, int index) {
     // A hair past the touch along the approach, so the pair overlaps by about kSkin; never more than a tenth
     // of the body's smallest dimension further (a grazing approach).
     const float approach = dot(vec(dp) - m_obstacleShift[size_t(hit)], axis);
-    float extra = approach > 0.0f ? (gap + kSkin) / approach : 0.0f;
+    float extra = approach > 0.0f ? (gap + skin) / approach : 0.0f;
     extra = std::max(0.0f, std::min(extra, 0.1f * minDim / travel));
     sweep.fraction = std::min(1.0f, t + extra);
     const CastGeometry& obstacle = m_cast[size_t(m_obstacleOwner[size_t(hit)])];

@@ -48,7 +48,7 @@ int TreeBroadphase::proxyOf(CollisionGeometry* g) {
 
 void TreeBroadphase::refit(int p, const gcol::Aabb& tight) {
     Proxy& x = m_proxies[size_t(p)];
-    const Vector m(kMargin, kMargin, kMargin);
+    const Vector m(m_margin, m_margin, m_margin);
     gcol::Aabb fat{tight.min - m, tight.max + m};
     if (x.leaf != gcol::DynamicTree::kNull) {
         // Motion prediction: where it went since its last fat box, it probably goes on (at most a box size).

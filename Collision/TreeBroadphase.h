@@ -23,7 +23,7 @@
 
 class TreeBroadphase final : public Broadphase {
 public:
-    static constexpr float kMargin = 0.1f;   // m, fat box margin on every side
+    static constexpr float kMargin = 0.1f;   // m (times the length unit), fat box margin on every side
     static constexpr size_t kBulkMoves = 64; // this many moved, and a quarter of all: one rebuild
 
     void findPairs(const std::vector<SimpleCollisionSpace::Entry>& entries,
@@ -33,6 +33,8 @@ public:
     void rayCandidates(const std::vector<CollisionGeometry*>& all, const Vector& origin, const Vector& dir,
                        float maxT, std::vector<CollisionGeometry*>& out) override;
     void forget(CollisionGeometry* g) override;
+    // Fat boxes made from now on get the new margin (the ones made already are still conservative).
+    void setLengthUnit(float unitsPerMetre) override { m_margin = kMargin * unitsPerMetre; }
 
     // For tests and benchmarks: tree queries made so far, the tree, the pairs kept.
     size_t treeQueries() const { return m_treeQueries; }
@@ -40,6 +42,7 @@ public:
     size_t pairCount() const { return m_pairs.size(); }
 
 private:
+    float m_margin = kMargin;
     struct Proxy {
         gcol::Aabb fat;
         Vector origin; // the pose and shape version at which fat was known to hold the tight box

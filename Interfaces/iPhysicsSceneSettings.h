@@ -42,6 +42,19 @@ public:
     // box or compound passes through anything at any speed; the next step resolves the contact there.
     virtual void setContinuousCollisionEnabled(bool on) = 0;
     virtual bool getContinuousCollisionEnabled() const = 0;
+    // The world's length unit: how many of its length units make a metre (default 1; 100 for a game in
+    // centimetres, 0.001 for one in kilometres; 1e-3..1e3, iCollisionSpaceScale.h). Every tolerance that is
+    // a length or a speed is a metre figure times this unit, so that a scene built in centimetres behaves as
+    // the same scene in metres: the contact solver's push-out speed cap (3 m/s), bounce threshold (1 m/s),
+    // deep and touch overlaps (1 cm, 1 mm), warm-start match and keep distances (5 cm, 1 cm) and bounce gap
+    // (0.1 mm), the sleep speed (0.05 m/s; 0.05 rad/s is no length), and the drag law's air density and
+    // reference area (RBDynamics.h). The scene forwards the unit to its collision space (scaleOf(space),
+    // when it has one) on setNewGlobalCollisionSpace and on every change. Gravity is not scaled: it is the
+    // game's to set in its own unit (-981 in centimetres). What follows a body's own size instead: the
+    // resting overlap of a contact (within 0.5 % of the smaller shape's bounding radius for shapes down to
+    // about 0.5 mm at the default step; see README). Refused with error() when out of range or not finite.
+    virtual bool setLengthUnitsPerMetre(float unitsPerMetre) = 0;
+    virtual float getLengthUnitsPerMetre() const = 0;
 
 protected:
     ~iPhysicsSceneSettings() = default; // part of a scene: Delete() the scene

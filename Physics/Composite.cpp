@@ -7,7 +7,9 @@
 namespace physics {
 
 namespace {
-// Air density of the drag law (RBDynamics.h) times the reference area (1 m^2), halved.
+// Air density of the drag law (RBDynamics.h, 1.2 kg/m^3) times the reference area (1 m^2), halved. In a
+// world of L length units per metre, rho is 1.2 / L^3 kg/unit^3 and A is L^2 unit^2: their product is this
+// over L, so that a body falls through the air alike at every scale.
 constexpr float HALF_RHO_AREA = 0.5f * 1.2f * 1.0f;
 
 struct Placed {
@@ -25,7 +27,7 @@ bool isKinematicChain(const RBDynamics& root) {
 }
 
 void buildComposite(RigidBody* rootBody, const std::unordered_map<const RBDynamics*, RigidBody*>& bodies,
-                    const Vec3& gravity, Composite& out) {
+                    const Vec3& gravity, float lengthUnit, Composite& out) {
     RBDynamics* root = &rootBody->getDynamics();
     out.root = root;
     out.parts.clear();
@@ -91,7 +93,8 @@ void buildComposite(RigidBody* rootBody, const std::unordered_map<const RBDynami
         Vec3 force = toEigen(d.force + d.temporalForce);
         if (d.mass < INFINITE_MASS) force += d.mass * toEigen(d.acceleration);
         out.parts.push_back({body, p.dyn, p.position - centre, p.rotation, force,
-                             toEigen(d.torque + d.temporalTorque), HALF_RHO_AREA * d.dragCoefficient});
+                             toEigen(d.torque + d.temporalTorque),
+                             HALF_RHO_AREA * d.dragCoefficient / lengthUnit});
     }
 }
 

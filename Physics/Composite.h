@@ -45,9 +45,10 @@ struct MotionState {
 };
 
 // Fills out (reusing its storage) for the chain rooted at rootBody's dynamics. bodies maps the dynamics of
-// attached parts to the scene's bodies (looked up only for chains, not for a lone body).
+// attached parts to the scene's bodies (looked up only for chains, not for a lone body). lengthUnit: the
+// world's length units per metre (the drag law's air density and reference area follow it).
 void buildComposite(RigidBody* rootBody, const std::unordered_map<const RBDynamics*, RigidBody*>& bodies,
-                    const Vec3& gravity, Composite& out);
+                    const Vec3& gravity, float lengthUnit, Composite& out);
 
 // Whether some part of the chain rooted at root has INFINITE_MASS (forces cannot move it), without building
 // it.

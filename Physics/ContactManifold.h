@@ -81,6 +81,11 @@ struct Manifold {
     // impulses, as it would have had it stayed awake.
     bool dormant = false;
     float friction = 0, restitution = 0;
+    // The smaller shape's bounding radius (infinite for two planes' worth): what a resting overlap is
+    // measured against (SolverSettings::restingOverlap). Known when the pair is reported, kept with it.
+    float size = 0;
+    // The soft contact of this pair for the step's sub-step (ContactSolver::contactSoftness).
+    float biasRate = 0, massScale = 1, impulseScale = 0;
     bool bounces = false;  // a point bounces this step: its overlap is projected out entirely
     float projectable = 0; // how much further its overlap may still be projected out this step
     int count = 0;

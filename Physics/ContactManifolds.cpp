@@ -66,6 +66,7 @@ void ContactSolver::buildManifolds(const CollisionContact* contacts, size_t coun
             const RBDynamics& matB = rb2 ? rb2->getDynamics() : defaults;
             m.friction = combine(m_settings.friction, matA.friction, matB.friction);
             m.restitution = combine(m_settings.restitution, matA.restitution, matB.restitution);
+            m.size = std::fmin(c.g1->getBoundingRadius(), c.g2->getBoundingRadius());
             found = current.emplace(key, m_manifolds.size()).first;
             m_manifolds.push_back(m);
         }

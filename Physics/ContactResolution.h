@@ -84,13 +84,16 @@ public:
     const Memory& memory() const { return m_outsiders; }
     void setMemory(const Memory& m) { m_outsiders = m; }
 
-    static constexpr float kSleepSpeed = 0.05f; // m/s and rad/s
+    // A body rests below kSleepSpeed m/s (scaled to the world's length unit) and kSleepSpeed rad/s.
+    static constexpr float kSleepSpeed = 0.05f;
+    void setLengthUnit(float unitsPerMetre) { m_sleepSpeed = kSleepSpeed * unitsPerMetre; }
     static constexpr float kTimeToSleep = 0.5f; // s
 
 private:
     int find(int i) const;
     // Whether a body outside the islands moves; records its pose for the next step's question.
     bool outsiderMoves(const RBDynamics& d);
+    float m_sleepSpeed = kSleepSpeed; // length units per second
     FlatMap<const RigidBody*, int> m_index;
     mutable std::vector<int> m_parent;
     std::vector<char> m_pushed; // per island member: touched by a moving outsider

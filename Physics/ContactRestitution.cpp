@@ -15,10 +15,11 @@
 // velocity half a step earlier than its position (v_k = v(t_k - dt/2)), and that pairing makes
 // 1/2 v^2 + g y - g dt v / 2 exactly invariant over free flight. With it, peaks stay at e^2 times the drop
 // height (plus g dt^2 / 8 = 0.34 mm at 60 Hz), wherever in the step the impact falls.
-// A bouncing pair is projected apart by a hair (kBounceGap), and its points are not kept next step: the
-// bounce leaves it in free flight. A residue of overlap would be pushed out next step, adding height; and a
-// body in the solve moves by sub-steps, whose gravity drop is (n + 1) / (2n) g dt^2 rather than the
-// integrator's g dt^2: a ball that stayed in the solve one step after each bounce rose 1 mm (0.1 %) a bounce.
+// A bouncing pair is projected apart by a hair (SolverSettings::bounceGap), and its points are not kept next
+// step: the bounce leaves it in free flight. A residue of overlap would be pushed out next step, adding
+// height; and a body in the solve moves by sub-steps, whose gravity drop is (n + 1) / (2n) g dt^2 rather than
+// the integrator's g dt^2: a ball that stayed in the solve one step after each bounce rose 1 mm (0.1 %) a
+// bounce.
 #include "ContactSolver.h"
 #include "SolverRows.h"
 
@@ -94,7 +95,7 @@ void ContactSolver::projectDeepOverlaps() {
     for (int iteration = 0; moved && iteration < kProjectionIterations; ++iteration) {
         moved = false;
         for (Manifold& m : m_manifolds) {
-            const float allowed = m.bounces ? -kBounceGap : m_settings.deepOverlap;
+            const float allowed = m.bounces ? -m_settings.bounceGap : m_settings.deepOverlap;
             SolverBody &a = m_bodies[m.a], &b = m_bodies[m.b];
             float excess = 0;
             for (int i = 0; i < m.count; ++i)

@@ -33,6 +33,18 @@ bool immovable(const RBDynamics& d) {
     return d.physicsType == PHYS_FixedInSpace || !(d.mass < INFINITE_MASS) || !(d.mass > 0.0f);
 }
 
+SolverSettings withLengthUnit(SolverSettings s, float unitsPerMetre) {
+    const SolverSettings metre;
+    s.maxPushSpeed = metre.maxPushSpeed * unitsPerMetre;
+    s.restitutionThreshold = metre.restitutionThreshold * unitsPerMetre;
+    s.deepOverlap = metre.deepOverlap * unitsPerMetre;
+    s.touchOverlap = metre.touchOverlap * unitsPerMetre;
+    s.matchDistance = metre.matchDistance * unitsPerMetre;
+    s.keepDistance = metre.keepDistance * unitsPerMetre;
+    s.bounceGap = metre.bounceGap * unitsPerMetre;
+    return s;
+}
+
 namespace {
 
 // Moves b by dp and turns it about its centre of mass by the rotation vector dtheta (first order).
@@ -98,19 +110,16 @@ void ContactSolver::dropManifolds() { m_manifolds.clear(); }
 void ContactSolver::solve(float dt, const SolverBodyAccess& access) {
     for (SolverBody& b : m_bodies)
         if (b.root && !movable(b)) access.refresh(b); // a kinematic body has moved since it entered
-    prepare(dt);
-    orderByLevel();
-    splitForces();
     const int n = std::max(1, m_settings.substeps);
     const float h = dt / float(n);
     m_dt = dt;
     // The soft contact (a damped spring in impulse form, Catto's "Soft Step"): stiff, but never stiffer than
-    // a quarter of the sub-step rate can follow.
-    const float omega = 2.0f * 3.14159265f * std::min(m_settings.contactHertz, 0.25f / h);
-    const float a1 = 2.0f * m_settings.dampingRatio + h * omega, a2 = h * omega * a1, a3 = 1.0f / (1.0f + a2);
-    m_biasRate = omega / a1;
-    m_massScale = a2 * a3;
-    m_impulseScale = a3;
+    // a quarter of the sub-step rate can follow (a small shape's contact excepted: contactSoftness).
+    m_omega = 2.0f * 3.14159265f * std::min(m_settings.contactHertz, 0.25f / h);
+    m_soft = softness(m_omega, m_settings.dampingRatio, h);
+    prepare(dt, h);
+    orderByLevel();
+    splitForces();
     for (int i = 0; i < n; ++i) {
         addForces(1.0f / float(n));
         warmStart(i == 0);
@@ -133,9 +142,28 @@ void ContactSolver::solve(float dt, const SolverBodyAccess& access) {
     storeImpulses();
 }
 
-void ContactSolver::prepare(float dt) {
+ContactSolver::Softness ContactSolver::softness(float omega, float dampingRatio, float h) {
+    const float a1 = 2.0f * dampingRatio + h * omega, a2 = h * omega * a1, a3 = 1.0f / (1.0f + a2);
+    return Softness{omega / a1, a2 * a3, a3};
+}
+
+// A resting contact gives |g| / w^2 whatever the bodies' size: a pair whose smaller shape is so small that
+// this is more than restingOverlap of its radius gets the stiffness that makes it so, up to maxContactTurn
+// a sub-step. Metre-sized shapes keep the world's softness, bit for bit.
+ContactSolver::Softness ContactSolver::contactSoftness(const Manifold& m, float h) const {
+    const float allowed = m_settings.restingOverlap * m.size;
+    if (!(allowed > 0.0f) || !(m_settings.gravity > allowed * m_omega * m_omega)) return m_soft;
+    const float omega = std::min(std::sqrt(m_settings.gravity / allowed), m_settings.maxContactTurn / h);
+    return omega > m_omega ? softness(omega, m_settings.dampingRatio, h) : m_soft;
+}
+
+void ContactSolver::prepare(float dt, float h) {
     for (Manifold& m : m_manifolds) {
         const SolverBody &a = m_bodies[m.a], &b = m_bodies[m.b];
+        const Softness soft = contactSoftness(m, h);
+        m.biasRate = soft.biasRate;
+        m.massScale = soft.massScale;
+        m.impulseScale = soft.impulseScale;
         for (int i = 0; i < m.count; ++i) {
             ContactPoint& p = m.points[i];
             p.rA = p.point - a.com;
@@ -236,7 +264,7 @@ void ContactSolver::solveManifold(Manifold& m, float h, bool pushOut) {
             // push-out pass, where the approach is already stopped: a soft target there relaxes the impact's
             // accumulated impulse and lets the same few % through.
         } else if (pushOut) {
-            target[i] = {std::max(m_biasRate * gap, -m_settings.maxPushSpeed), m_massScale, m_impulseScale};
+            target[i] = {std::max(m.biasRate * gap, -m_settings.maxPushSpeed), m.massScale, m.impulseScale};
         }
     }
     PairVelocity pair(a, b);

@@ -5,6 +5,7 @@
 #include "MathEigen.h"
 #include "RigidBody.h"
 #include "iCollisionSpace.h"
+#include "iCollisionSpaceScale.h"
 #include "iFixedUpdater.h"
 #include "iUtilities.h"
 
@@ -87,6 +88,8 @@ void PhysicsScene::setNewGlobalCollisionSpace(iCollisionSpace* cs) {
     // Deleting the space later is safe: the scene hears of it (onSpaceDestroyed) and forgets it.
     m_space = cs;
     ++m_spaceVersion; // contacts gathered from the old space are not resolved
+    // The space measures its tolerances in the scene's unit (a space the game scaled itself is told again).
+    if (iCollisionSpaceScale* scale = scaleOf(cs)) scale->setLengthUnitsPerMetre(m_lengthUnit);
 
     setDefaultCollisionSpace(cs);
 }
@@ -97,6 +100,9 @@ bool PhysicsScene::setGravity(const Vector& g) {
         return false;
     }
     m_gravity = g;
+    SolverSettings s = m_solver.settings();
+    s.gravity = g.length(); // what a resting contact carries (SolverSettings::restingOverlap)
+    m_solver.setSettings(s);
     return true;
 }
 
@@ -391,7 +397,7 @@ void PhysicsScene::integrateComposite(RigidBody* body, float dt) {
     RBDynamics& d = body->getDynamics();
     d.lastVelocity = d.velocity;
     Composite& c = m_composite;
-    buildComposite(body, m_byDynamics, toEigen(m_gravity), c);
+    buildComposite(body, m_byDynamics, toEigen(m_gravity), m_lengthUnit, c);
     if (d.physicsType != PHYS_FixedInSpace) {
         // The cached quaternion is exact; the matrix is only re-read when the game replaced it.
         Quat q = d.orientation == body->writtenOrientation ? body->rotation : toQuat(d.orientation);

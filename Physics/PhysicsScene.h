@@ -77,6 +77,8 @@ public:
     void setSleepingEnabled(bool on) override;
     void setContinuousCollisionEnabled(bool on) override { m_continuousOn = on; }
     bool getContinuousCollisionEnabled() const override { return m_continuousOn; }
+    bool setLengthUnitsPerMetre(float unitsPerMetre) override; // PhysicsSceneContacts.cpp
+    float getLengthUnitsPerMetre() const override { return m_lengthUnit; }
     size_t getAwakeBodyCount() const override;
     float getMaxPenetration() const override { return m_solver.maxPenetrationBefore(); }
     float getRemainingPenetration() const override { return m_solver.maxPenetrationAfter(); }
@@ -137,6 +139,7 @@ private:
     unsigned long long m_membership = 0; // changes whenever a body joins or leaves (snapshots)
 
     Vector m_gravity = Vector(0, -9.81f, 0);
+    float m_lengthUnit = 1.0f; // length units per metre
     int m_stepRate = 60;
     int m_maxSteps = 8;
     Integrator m_integrator = INTEGRATOR_SemiImplicitEuler;

@@ -4,6 +4,7 @@
 #include "MathEigen.h"
 #include "RigidBody.h"
 #include "iCollisionEvents.h"
+#include "iCollisionSpaceScale.h"
 #include "iUtilities.h"
 
 namespace physics {
@@ -29,6 +30,19 @@ bool PhysicsScene::setSolverIterations(int n) {
     SolverSettings s = m_solver.settings();
     s.substeps = n;
     m_solver.setSettings(s);
+    return true;
+}
+
+bool PhysicsScene::setLengthUnitsPerMetre(float unitsPerMetre) {
+    if (!validLengthUnit(unitsPerMetre)) {
+        error(L"PhysicsScene::setLengthUnitsPerMetre: the unit must be 1e-3..1e3 length units per metre; "
+              L"unchanged");
+        return false;
+    }
+    m_lengthUnit = unitsPerMetre;
+    m_solver.setSettings(withLengthUnit(m_solver.settings(), unitsPerMetre));
+    m_islands.setLengthUnit(unitsPerMetre);
+    if (iCollisionSpaceScale* scale = scaleOf(m_space)) scale->setLengthUnitsPerMetre(unitsPerMetre);
     return true;
 }
 
