@@ -48,8 +48,9 @@ struct SolverSettings {
     float matchDistance = 0.05f;       // m: a point within this of last step's anchor inherits its impulses
     float keepDistance = 0.01f;        // m: a point that came apart by less than this is kept (0: never)
     bool warmStart = true;             // start from last step's impulses
-    CombineRule friction = COMBINE_Sum;    // the seed's rule: the two bodies' values added
-    CombineRule restitution = COMBINE_Max; // a superball bounces off anything
+    CombineRule friction = COMBINE_Sum;           // the seed's rule: the two bodies' values added
+    CombineRule restitution = COMBINE_Max;        // a superball bounces off anything
+    bool frictionOn = true, restitutionOn = true; // off: every pair's coefficient is 0 (iSceneSwitches)
 };
 
 float combine(CombineRule rule, float a, float b);
@@ -131,6 +132,7 @@ private:
     void matchPreviousImpulses();
     void storeImpulses();
     // ContactSolver.cpp
+    void applySwitches();
     void prepare(float dt);
     void splitForces();
     void addForces(float share);
