@@ -31,6 +31,7 @@ void buildComposite(RigidBody* rootBody, const std::unordered_map<const RBDynami
     out.parts.clear();
     out.kinematic = false;
     out.hasGenerators = false;
+    out.drag = drag;
     out.gravity =
         root->physicsType == PHYS_Falling ? Vec3(gravity * rootBody->getGravityScale()) : Vec3::Zero();
 

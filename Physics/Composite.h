@@ -35,6 +35,7 @@ struct Composite {
     bool kinematic = false; // some part has INFINITE_MASS: forces do nothing, velocities are kept
     // Zero inverse inertia (a part's switch or a zero inverse tensor): the integrators skip the rotation.
     bool rotationLocked = false;
+    bool drag = true; // the scene's drag switch
     bool hasGenerators = false;
     std::vector<CompositePart> parts;
 };

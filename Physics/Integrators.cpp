@@ -28,8 +28,8 @@ Derivative evaluate(const Composite& c, const MotionState& s, float t) {
     for (const CompositePart& p : c.parts) {
         Vec3 arm = r * p.offset;
         Vec3 vp = s.v + d.omega.cross(arm);
-        Vec3 f = p.constForce; // quadratic drag at the part's COM (none: its square root is skipped)
-        if (p.dragK != 0.0f) f -= p.dragK * vp.norm() * vp;
+        Vec3 f = p.constForce; // quadratic drag at the part's COM (switched off: not evaluated)
+        if (c.drag) f -= p.dragK * vp.norm() * vp;
         Vec3 tau = p.constTorque;
         if (p.body && !p.body->generators().empty()) {
             RigidBodyState state;
