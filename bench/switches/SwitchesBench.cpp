@@ -6,9 +6,10 @@
 //    while they fall and pile up, before much sleeps); switched: rotation locked on every sphere, or
 //    validation, interpolation, listeners (a counting listener on every sphere), continuous collision,
 //    friction or restitution off;
-//  * NinetyPercentAsleep: 1,000 unit boxes resting apart on the floor, 100 of them not allowed to sleep, 600
-//    steps after a 60-step warm-up; switched: sleeping off (all 1,000 awake; the ratio is what sleeping
-//    saves, the other way round).
+//  * NinetyPercentAsleep: 1,000 unit boxes resting apart on the floor, a counting listener on each, 100 of
+//    them not allowed to sleep, 600 steps after a 60-step warm-up; switched: sleeping off (all 1,000 awake;
+//    the ratio is what sleeping saves, the other way round), or listeners, interpolation or validation off
+//    (in a scene this cheap, the per-frame work is a larger share).
 #include "RBDynamics.h"
 #include "Scenes.h"
 #include "World.h"
@@ -134,18 +135,25 @@ void BM_Pile_ListenersOff(benchmark::State& state) {
     compare(state, 0, 300, withListeners, [](World& w) { sceneOff(w, FEATURE_Listeners); });
 }
 
-// 1,000 unit boxes resting 2 m apart on the floor; every tenth may not sleep.
-void BM_NinetyPercentAsleep_SleepingOff(benchmark::State& state) {
-    const Build resting = [](World& w) {
-        w.ground();
-        for (int i = 0; i < 1000; ++i) {
-            iPhysicsFrame* f = w.box(Vector(2.0f * float(i % 40), 0.5f, 2.0f * float(i / 40)),
-                                     Vector(0.5f, 0.5f, 0.5f), 1.0f);
-            if (i % 10 == 0) switchesOf(f->getRB())->setSleepAllowed(false);
-        }
-    };
-    compare(state, 60, 600, resting, [](World& w) { sceneOff(w, FEATURE_Sleeping); });
+// 1,000 unit boxes resting 2 m apart on the floor, each with a counting listener; every tenth may not sleep.
+const Build kResting = [](World& w) {
+    w.ground();
+    for (int i = 0; i < 1000; ++i) {
+        iPhysicsFrame* f =
+            w.box(Vector(2.0f * float(i % 40), 0.5f, 2.0f * float(i / 40)), Vector(0.5f, 0.5f, 0.5f), 1.0f);
+        f->getRB()->attachListener(&g_listener);
+        if (i % 10 == 0) switchesOf(f->getRB())->setSleepAllowed(false);
+    }
+};
+void resting(benchmark::State& state, SceneFeature off) {
+    compare(state, 60, 600, kResting, [off](World& w) { sceneOff(w, off); });
 }
+void BM_NinetyPercentAsleep_SleepingOff(benchmark::State& state) { resting(state, FEATURE_Sleeping); }
+void BM_NinetyPercentAsleep_ListenersOff(benchmark::State& state) { resting(state, FEATURE_Listeners); }
+void BM_NinetyPercentAsleep_InterpolationOff(benchmark::State& state) {
+    resting(state, FEATURE_Interpolation);
+}
+void BM_NinetyPercentAsleep_ValidationOff(benchmark::State& state) { resting(state, FEATURE_Validation); }
 
 } // namespace
 
@@ -157,5 +165,8 @@ BENCHMARK(BM_Pile_ContinuousOff)->Unit(benchmark::kMillisecond)->Iterations(1);
 BENCHMARK(BM_Pile_FrictionOff)->Unit(benchmark::kMillisecond)->Iterations(1);
 BENCHMARK(BM_Pile_RestitutionOff)->Unit(benchmark::kMillisecond)->Iterations(1);
 BENCHMARK(BM_NinetyPercentAsleep_SleepingOff)->Unit(benchmark::kMillisecond)->Iterations(1);
+BENCHMARK(BM_NinetyPercentAsleep_ListenersOff)->Unit(benchmark::kMillisecond)->Iterations(1);
+BENCHMARK(BM_NinetyPercentAsleep_InterpolationOff)->Unit(benchmark::kMillisecond)->Iterations(1);
+BENCHMARK(BM_NinetyPercentAsleep_ValidationOff)->Unit(benchmark::kMillisecond)->Iterations(1);
 
 BENCHMARK_MAIN();
