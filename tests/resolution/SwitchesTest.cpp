@@ -212,10 +212,9 @@ TEST(Switches, InterpolationOffFramesShowTheLastStepsPose) {
 
 // Validation off: a NaN or a scaled orientation written straight into a body is neither reported nor undone
 // (the check is skipped) and the scene steps on without crashing, a collision space included (the NaN
-// spreads, through the solver's shared static world, to every body on the same floor: that is what the
-// check is for); what the API refuses
-// is still refused (setDynamics, ApplyImpulse, a tensor setter), the old state kept. On again, the next step
-// reports every invalid body and puts it back to its last state checked valid.
+// spreads through the contact solver to the bodies on the same floor: that is what the check is for); what
+// the API refuses is still refused (setDynamics, ApplyImpulse, a tensor setter), the old state kept. On
+// again, the next step reports every invalid body and puts it back to its last state checked valid.
 TEST(Switches, ValidationOffSkipsTheCheckButTheApiStillRefusesAndNothingCrashes) {
     SceneFixture f;
     f.world->ground();
