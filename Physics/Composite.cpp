@@ -27,13 +27,15 @@ bool isKinematicChain(const RBDynamics& root) {
 }
 
 void buildComposite(RigidBody* rootBody, const std::unordered_map<const RBDynamics*, RigidBody*>& bodies,
-                    const Vec3& gravity, float lengthUnit, Composite& out) {
+                    const Vec3& gravity, float lengthUnit, bool drag, Composite& out) {
     RBDynamics* root = &rootBody->getDynamics();
     out.root = root;
     out.parts.clear();
     out.kinematic = false;
     out.hasGenerators = false;
-    out.gravity = root->physicsType == PHYS_Falling ? gravity : Vec3::Zero();
+    out.drag = drag;
+    out.gravity =
+        root->physicsType == PHYS_Falling ? Vec3(gravity * rootBody->getGravityScale()) : Vec3::Zero();
     out.angularDrag = root->angularDrag;
 
     // Place every part relative to the root: a child stores its pose relative to its parent's COM and
@@ -82,6 +84,7 @@ void buildComposite(RigidBody* rootBody, const std::unordered_map<const RBDynami
         out.invInertia = locked ? Mat3(Mat3::Zero()) : Mat3(inertia.inverse().cast<float>());
     }
 
+    bool locked = false; // rotation locked by a part's switch
     for (const Placed& p : placed) {
         RBDynamics& d = *p.dyn;
         RigidBody* body = rootBody;
@@ -90,12 +93,15 @@ void buildComposite(RigidBody* rootBody, const std::unordered_map<const RBDynami
             body = found == bodies.end() ? nullptr : found->second;
         }
         if (body && !body->generators().empty()) out.hasGenerators = true;
+        locked = locked || (body && body->isRotationLocked());
         Vec3 force = toEigen(d.force + d.temporalForce);
         if (d.mass < INFINITE_MASS) force += d.mass * toEigen(d.acceleration);
         out.parts.push_back({body, p.dyn, p.position - centre, p.rotation, force,
                              toEigen(d.torque + d.temporalTorque),
-                             HALF_RHO_AREA * d.dragCoefficient / lengthUnit});
+                             drag ? HALF_RHO_AREA * d.dragCoefficient / lengthUnit : 0.0f});
     }
+    if (locked) out.inertia = out.invInertia = Mat3::Zero(); // as a zero inverse tensor: never turns
+    out.rotationLocked = out.invInertia.isZero(0.0f);
 }
 
 } // namespace physics

@@ -33,6 +33,9 @@ struct Composite {
     Vec3 rootOffset = Vec3::Zero();                                 // root's own COM - C, root axes
     Vec3 gravity = Vec3::Zero();                                    // zero unless the root is PHYS_Falling
     bool kinematic = false; // some part has INFINITE_MASS: forces do nothing, velocities are kept
+    // Zero inverse inertia (a part's switch or a zero inverse tensor): the integrators skip the rotation.
+    bool rotationLocked = false;
+    bool drag = true; // the scene's drag switch
     bool hasGenerators = false;
     float angularDrag = 0; // the root's RBDynamics::angularDrag (1/s)
     std::vector<CompositePart> parts;
@@ -45,10 +48,12 @@ struct MotionState {
 };
 
 // Fills out (reusing its storage) for the chain rooted at rootBody's dynamics. bodies maps the dynamics of
-// attached parts to the scene's bodies (looked up only for chains, not for a lone body). lengthUnit: the
-// world's length units per metre (the drag law's air density and reference area follow it).
+// attached parts to the scene's bodies (looked up only for chains, not for a lone body). gravity is the
+// scene's (zero when switched off), scaled by the root's gravity scale; lengthUnit: the world's length units
+// per metre (the drag law's air density and reference area follow it); drag false leaves every part's drag
+// out. A part whose body is rotation-locked (iRigidBodySwitches) gives the composite zero inertia tensors.
 void buildComposite(RigidBody* rootBody, const std::unordered_map<const RBDynamics*, RigidBody*>& bodies,
-                    const Vec3& gravity, float lengthUnit, Composite& out);
+                    const Vec3& gravity, float lengthUnit, bool drag, Composite& out);
 
 // Whether some part of the chain rooted at root has INFINITE_MASS (forces cannot move it), without building
 // it.

@@ -195,7 +195,8 @@ void Islands::updateSleep(const std::vector<RigidBody*>& bodies, float dt) {
         const int* it = m_index.find(b);
         if (!it || b->asleep()) continue;
         const RBDynamics& d = b->getDynamics();
-        bool resting = d.velocity.length() < m_sleepSpeed && d.angularVelocity.length() < kSleepSpeed;
+        bool resting = b->getSleepAllowed() && d.velocity.length() < m_sleepSpeed &&
+                       d.angularVelocity.length() < kSleepSpeed; // never resting: its island stays awake
         b->restTime = resting ? b->restTime + dt : 0.0f;
         float& least = leastRest[find(*it)];
         least = std::min(least, b->restTime);

@@ -110,6 +110,7 @@ void ContactSolver::dropManifolds() { m_manifolds.clear(); }
 void ContactSolver::solve(float dt, const SolverBodyAccess& access) {
     for (SolverBody& b : m_bodies)
         if (b.root && !movable(b)) access.refresh(b); // a kinematic body has moved since it entered
+    applySwitches();
     const int n = std::max(1, m_settings.substeps);
     const float h = dt / float(n);
     m_dt = dt;
@@ -142,6 +143,18 @@ void ContactSolver::solve(float dt, const SolverBodyAccess& access) {
     storeImpulses();
 }
 
+// Friction or restitution switched off (iSceneSwitches): every pair's coefficient is 0. A frictionless
+// pair carries no friction impulse to warm-start: its friction rows are neither set up nor solved.
+void ContactSolver::applySwitches() {
+    for (Manifold& m : m_manifolds) {
+        if (!m_settings.frictionOn) m.friction = 0.0f;
+        if (!m_settings.restitutionOn) m.restitution = 0.0f;
+        if (m.friction == 0.0f)
+            for (int i = 0; i < m.count; ++i)
+                m.points[i].tangentImpulse[0] = m.points[i].tangentImpulse[1] = 0;
+    }
+}
+
 ContactSolver::Softness ContactSolver::softness(float omega, float dampingRatio, float h) {
     const float a1 = 2.0f * dampingRatio + h * omega, a2 = h * omega * a1, a3 = 1.0f / (1.0f + a2);
     return Softness{omega / a1, a2 * a3, a3};
@@ -164,12 +177,13 @@ void ContactSolver::prepare(float dt, float h) {
         m.biasRate = soft.biasRate;
         m.massScale = soft.massScale;
         m.impulseScale = soft.impulseScale;
+        const int rows = m.friction > 0.0f ? 3 : 1; // the normal row, and the two friction rows
         for (int i = 0; i < m.count; ++i) {
             ContactPoint& p = m.points[i];
             p.rA = p.point - a.com;
             p.rB = p.point - b.com;
-            float masses[3];
-            for (int row = 0; row < 3; ++row) {
+            float masses[3] = {0, 0, 0};
+            for (int row = 0; row < rows; ++row) {
                 const Vec3& d = row == 0 ? p.normal : p.tangent[row - 1];
                 const Vec3 armA = p.rA.cross(d), armB = p.rB.cross(d);
                 const Vec3 turnA = a.invInertia * armA, turnB = b.invInertia * armB;
@@ -186,7 +200,7 @@ void ContactSolver::prepare(float dt, float h) {
             p.tangentMass[1] = masses[2];
             p.approachSpeed = relativeSpeed<0>(a, b, p);
             p.maxNormalImpulse = 0;
-            prepareBounce(a, b, p, dt);
+            if (m.restitution > 0.0f) prepareBounce(a, b, p, dt); // read only by bouncing points
         }
     }
 }
@@ -226,6 +240,7 @@ void ContactSolver::warmStart(bool firstSubstep) {
                 continue;
             }
             pair.apply<0>(p, p.normalImpulse);
+            if (m.friction == 0.0f) continue;
             pair.apply<1>(p, p.tangentImpulse[0]);
             pair.apply<2>(p, p.tangentImpulse[1]);
         }
@@ -270,7 +285,7 @@ void ContactSolver::solveManifold(Manifold& m, float h, bool pushOut) {
     PairVelocity pair(a, b);
     solveNormal(m, target, pair);
     solveNormal(m, target, pair);
-    solveFriction(m, pair);
+    if (m.friction > 0.0f) solveFriction(m, pair);
     solveNormal(m, target, pair);
     pair.store(a, b);
 }

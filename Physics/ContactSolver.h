@@ -63,6 +63,7 @@ struct SolverSettings {
     float gravity = 9.81f;         // |g|, in length units per s^2 (the scene's gravity)
     float restingOverlap = 0.005f; // of the smaller shape's bounding radius
     float maxContactTurn = 6.2831853f;
+    bool frictionOn = true, restitutionOn = true; // off: every pair's coefficient is 0 (iSceneSwitches)
 };
 
 // s with every length and speed of the metre defaults (SolverSettings{}) scaled to unitsPerMetre.
@@ -147,6 +148,7 @@ private:
     void matchPreviousImpulses();
     void storeImpulses();
     // ContactSolver.cpp
+    void applySwitches();
     void prepare(float dt, float h);
     void splitForces();
     void addForces(float share);

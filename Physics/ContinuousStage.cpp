@@ -14,7 +14,9 @@ size_t ContinuousStage::run(const std::vector<RigidBody*>& bodies, iCollisionSpa
     m_owners.clear();
     for (RigidBody* b : bodies) {
         const RBDynamics& d = b->getDynamics();
-        if (b->dying() || b->pendingRemoval || b->asleep() || d.attachedTo() || immovable(d)) continue;
+        if (b->dying() || b->pendingRemoval || b->asleep() || d.attachedTo() || immovable(d) ||
+            !b->getContinuousCollisionEnabled())
+            continue;
         // An unmoved body (a resting one the solver held still) needs no sweep: a shorter batch.
         if (d.position == b->previousPosition() && b->rotation.coeffs() == b->previousRotation().coeffs())
             continue;

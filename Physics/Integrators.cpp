@@ -23,12 +23,13 @@ Quat rotateBy(const Quat& q, const Vec3& omega, float dt) {
 Derivative evaluate(const Composite& c, const MotionState& s, float t) {
     Derivative d;
     Mat3 r = s.q.toRotationMatrix();
-    d.omega = r * c.invInertia * r.transpose() * s.L;
+    d.omega = c.rotationLocked ? Vec3(Vec3::Zero()) : Vec3(r * c.invInertia * r.transpose() * s.L);
     Vec3 force = Vec3::Zero(), torque = Vec3::Zero();
     for (const CompositePart& p : c.parts) {
         Vec3 arm = r * p.offset;
         Vec3 vp = s.v + d.omega.cross(arm);
-        Vec3 f = p.constForce - p.dragK * vp.norm() * vp; // quadratic drag at the part's COM
+        Vec3 f = p.constForce; // quadratic drag at the part's COM (switched off: not evaluated)
+        if (c.drag) f -= p.dragK * vp.norm() * vp;
         Vec3 tau = p.constTorque;
         if (p.body && !p.body->generators().empty()) {
             RigidBodyState state;
@@ -44,7 +45,7 @@ Derivative evaluate(const Composite& c, const MotionState& s, float t) {
             tau += toEigen(gt);
         }
         force += f;
-        torque += tau + arm.cross(f);
+        if (!c.rotationLocked) torque += tau + arm.cross(f); // a locked body's momentum stays zero
     }
     d.acceleration = c.gravity + force * c.invMass;
     d.torque = torque;
@@ -116,6 +117,7 @@ void explicitEuler(const Composite& c, MotionState& s, float dt) {
     Derivative d = evaluate(c, s, 0);
     s.x += s.v * dt; // the old velocity: this is what makes it "explicit" (and energy-gaining)
     s.v += d.acceleration * dt;
+    if (c.rotationLocked) return;
     s.q = keepRotationalEnergy(c, s.q, rotateBy(s.q, d.omega, dt), s.L);
     s.L += d.torque * dt;
 }
@@ -125,7 +127,7 @@ void semiImplicitEuler(const Composite& c, MotionState& s, float dt) {
     s.v += d.acceleration * dt; // velocities first ...
     s.L += d.torque * dt;
     s.x += s.v * dt; // ... then positions with the new velocities (symplectic)
-    s.q = keepRotationalEnergy(c, s.q, rotateMidpoint(c, s.q, s.L, dt), s.L);
+    if (!c.rotationLocked) s.q = keepRotationalEnergy(c, s.q, rotateMidpoint(c, s.q, s.L, dt), s.L);
 }
 
 void velocityVerlet(const Composite& c, MotionState& s, float dt) {
@@ -136,7 +138,7 @@ void velocityVerlet(const Composite& c, MotionState& s, float dt) {
     s.x += s.v * dt + d0.acceleration * (h * dt);
     s.v += d0.acceleration * h;
     s.L += d0.torque * h;
-    s.q = keepRotationalEnergy(c, s.q, rotateMidpoint(c, s.q, s.L, dt), s.L);
+    if (!c.rotationLocked) s.q = keepRotationalEnergy(c, s.q, rotateMidpoint(c, s.q, s.L, dt), s.L);
     Derivative d1 = evaluate(c, s, dt);
     s.v += d1.acceleration * h;
     s.L += d1.torque * h;
@@ -173,6 +175,7 @@ void rungeKutta4(const Composite& c, MotionState& s, float dt) {
     s.x += (s.v + 2.0f * s2.v + 2.0f * s3.v + s4.v) * w;
     s.v += (k1.acceleration + 2.0f * k2.acceleration + 2.0f * k3.acceleration + k4.acceleration) * w;
     s.L += (k1.torque + 2.0f * k2.torque + 2.0f * k3.torque + k4.torque) * w;
+    if (c.rotationLocked) return; // never turns
     // dq/dt = 1/2 (0, w) q, averaged over the four stages.
     Quat sum(0, 0, 0, 0);
     const MotionState* states[] = {&s, &s2, &s3, &s4};

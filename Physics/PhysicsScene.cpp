@@ -200,7 +200,7 @@ void PhysicsScene::update(int now) {
             delete this;
             return;
         }
-        writeFrames(float(m_accumulator) / 1000.0f);
+        writeFrames(m_interpolationOn ? float(m_accumulator) / 1000.0f : 1.0f);
         return;
     }
     m_profiler.beginUpdate();
@@ -233,7 +233,7 @@ void PhysicsScene::update(int now) {
         delete this;
         return;
     }
-    writeFrames(float(m_accumulator) / 1000.0f);
+    writeFrames(m_interpolationOn ? float(m_accumulator) / 1000.0f : 1.0f); // 1: the last step's pose
 }
 
 void PhysicsScene::writeFrames(float alpha) {
@@ -262,7 +262,7 @@ void PhysicsScene::step(float dt) {
         if (b->asleep() && !b->editedWhileAsleep()) continue;
         b->setAsleep(false); // before the space looks: its pairs are tested again
         b->adoptFrameEdits();
-        if (b->validate("before a step")) b->snapshotValid(); // the game's valid edits are kept on failure
+        if (m_validationOn && b->validate("before a step")) b->snapshotValid(); // valid edits kept on failure
     }
     if (m_sleeping)
         m_islands.wakeIslandMates(m_bodies); // a sleeping island wakes whole, before the space looks
@@ -337,7 +337,7 @@ void PhysicsScene::step(float dt) {
     m_profiler.lap(&PhysicsProfile::continuous);
 
     // 8. A step that produced NaN or Inf (absurd forces) is undone; otherwise it is the new valid state.
-    for (size_t i = 0; i < m_bodies.size(); ++i) {
+    for (size_t i = 0; m_validationOn && i < m_bodies.size(); ++i) {
         RigidBody* b = m_bodies[i];
         if (b->dying() || b->pendingRemoval || b->asleep()) continue;
         if (b->validate("after a step")) b->snapshotValid();
@@ -397,7 +397,8 @@ void PhysicsScene::integrateComposite(RigidBody* body, float dt) {
     RBDynamics& d = body->getDynamics();
     d.lastVelocity = d.velocity;
     Composite& c = m_composite;
-    buildComposite(body, m_byDynamics, toEigen(m_gravity), m_lengthUnit, c);
+    buildComposite(body, m_byDynamics, m_gravityOn ? toEigen(m_gravity) : Vec3::Zero(), m_lengthUnit,
+                   m_dragOn, c);
     if (d.physicsType != PHYS_FixedInSpace) {
         // The cached quaternion is exact; the matrix is only re-read when the game replaced it.
         Quat q = d.orientation == body->writtenOrientation ? body->rotation : toQuat(d.orientation);
@@ -433,7 +434,7 @@ void PhysicsScene::integrateComposite(RigidBody* body, float dt) {
             d.velocity = toVector(s.v + omega1.cross(arm1));
             d.angularVelocity = toVector(omega1);
             d.angularMomentum = c.kinematic ? toVector(worldInertia(c, s.q) * omega) : toVector(s.L);
-            d.orientation = toOrientation(s.q);
+            if (!c.rotationLocked) d.orientation = toOrientation(s.q); // locked: the matrix is kept exactly
             body->rotation = s.q;
         }
         body->writtenOmega = d.angularVelocity;

@@ -18,6 +18,7 @@
 #include "iPhysicsSceneProfile.h"
 #include "iPhysicsSceneSettings.h"
 #include "iPhysicsSceneStats.h"
+#include "iSceneSwitches.h"
 #include "iSnapshots.h"
 
 #include <cstdint>
@@ -34,7 +35,8 @@ class PhysicsScene final : public iPhysicsScene,
                            public iPhysicsSceneStats,
                            public iPhysicsSceneProfile,
                            public iSnapshots,
-                           public iDebugDrawable {
+                           public iDebugDrawable,
+                           public iSceneSwitches {
 public:
     PhysicsScene();
     PhysicsScene(const PhysicsScene&) = delete;
@@ -83,6 +85,9 @@ public:
     float getMaxPenetration() const override { return m_solver.maxPenetrationBefore(); }
     float getRemainingPenetration() const override { return m_solver.maxPenetrationAfter(); }
     const PhysicsProfile& getProfile() const override { return m_profiler.profile(); }
+    // --- iSceneSwitches (SceneSwitches.cpp) ---
+    bool setFeatureEnabled(SceneFeature f, bool on) override;
+    bool isFeatureEnabled(SceneFeature f) const override;
     // --- iSnapshots (SceneSnapshot.cpp) ---
     iSnapshot* takeSnapshot() const override;
     bool restoreSnapshot(const iSnapshot* s) override;
@@ -164,6 +169,10 @@ private:
     bool m_continuousOn = true;
     StepProfiler m_profiler;
     bool m_lastStepSolved = false; // the solver ran in the last step (its manifolds are that step's)
+    // iSceneSwitches: gravity, drag, listeners, validation, interpolation (the solver keeps friction and
+    // restitution; sleeping and continuous collision are m_sleeping and m_continuousOn).
+    bool m_gravityOn = true, m_dragOn = true, m_listenersOn = true, m_validationOn = true;
+    bool m_interpolationOn = true;
 };
 
 } // namespace physics

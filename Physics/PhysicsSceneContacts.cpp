@@ -15,7 +15,7 @@ void PhysicsScene::holdCollisionEvents() {
 
 void PhysicsScene::deliverCollisionEvents() {
     iCollisionEvents* events = m_space ? eventsOf(m_space) : nullptr;
-    if (!events) return;
+    if (!events || !m_listenersOn) return; // listeners off: the held events are never delivered
     beginSteps(); // listeners may delete bodies and scenes, or call update(): as in a step
     events->deliverEvents();
     flushDeferred();

@@ -8,6 +8,7 @@
 #include "iUtilities.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstring>
 #include <string>
 #include <unordered_map>
@@ -70,6 +71,7 @@ iRigidBody* RigidBody::clone() const {
     copy->m_dyn = m_dyn;
     copy->m_listeners = m_listeners;
     copy->m_generators = m_generators;
+    copy->m_switches = m_switches;
     copy->snapshotValid();
     copy->recordPreviousPose();
     copy->recordStepPose();
@@ -98,6 +100,16 @@ void RigidBody::attachListener(iCollisionListener* l) {
 
 void RigidBody::detachListener(const iCollisionListener* l) {
     m_listeners.erase(std::remove(m_listeners.begin(), m_listeners.end(), l), m_listeners.end());
+}
+
+bool RigidBody::setGravityScale(float scale) {
+    if (!std::isfinite(scale)) {
+        error(L"iRigidBodySwitches::setGravityScale: non-finite scale refused");
+        return false;
+    }
+    if (scale != m_switches.gravityScale) wake(); // asleep under the old weight, it would hang
+    m_switches.gravityScale = scale;
+    return true;
 }
 
 void RigidBody::setDynamics(const RBDynamics& d) {
@@ -215,11 +227,14 @@ void RigidBody::writeFrame(float alpha) {
         recordPreviousPose();
         recordStepPose();
     }
-    // Drawn pose = previous step's pose blended towards the current one: position lerp, orientation slerp.
-    Vector cur = worldPosition();
-    Quat q = m_prevRotation.slerp(alpha, toQuat(worldOrientation()));
-    Vector p = m_prevPosition + (cur - m_prevPosition) * alpha;
-    Matrix r = toOrientation(q.normalized());
+    // Drawn pose = previous step's pose blended towards the current one: position lerp, orientation slerp;
+    // alpha 1 (interpolation off) is the current pose itself, with no blend computed.
+    Vector p = worldPosition();
+    Matrix r = worldOrientation();
+    if (alpha < 1.0f) {
+        p = m_prevPosition + (p - m_prevPosition) * alpha;
+        r = toOrientation(m_prevRotation.slerp(alpha, toQuat(r)).normalized());
+    }
     setFrameWorldPose(m_frame, r, p - r.direction(m_dyn.com));
     m_writtenWorld = m_frame->world();
 }

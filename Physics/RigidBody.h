@@ -11,6 +11,7 @@
 #include "iLifetime.h"
 #include "iRigidBody.h"
 #include "iRigidBodyMotion.h"
+#include "iRigidBodySwitches.h"
 #include "iUserPointer.h"
 
 #include <vector>
@@ -23,7 +24,11 @@ namespace physics {
 
 class PhysicsScene;
 
-class RigidBody final : public iRigidBody, public iRigidBodyMotion, public iLifetime, public iUserPointer {
+class RigidBody final : public iRigidBody,
+                        public iRigidBodyMotion,
+                        public iRigidBodySwitches,
+                        public iLifetime,
+                        public iUserPointer {
 public:
     explicit RigidBody(iFrame* frame);
     RigidBody(const RigidBody&) = delete;
@@ -56,6 +61,17 @@ public:
     void resetAlive() override { m_alive = true; }
     void setUserPointer(void* p) override { m_userPointer = p; }
     void* getUserPointer() const override { return m_userPointer; }
+
+    // --- iRigidBodySwitches (RigidBody.cpp) ---
+    void setRotationLocked(bool locked) override { m_switches.rotationLocked = locked; }
+    bool isRotationLocked() const override { return m_switches.rotationLocked; }
+    bool setGravityScale(float scale) override;
+    float getGravityScale() const override { return m_switches.gravityScale; }
+    void setContinuousCollisionEnabled(bool on) override { m_switches.continuous = on; }
+    bool getContinuousCollisionEnabled() const override { return m_switches.continuous; }
+    void setSleepAllowed(bool allowed) override { m_switches.sleepAllowed = allowed; }
+    bool getSleepAllowed() const override { return m_switches.sleepAllowed; }
+    void copySwitches(const RigidBody& from) { m_switches = from.m_switches; } // a clone's
 
     // --- the scene's side ---
     PhysicsScene* scene() const { return m_scene; }
@@ -165,6 +181,10 @@ private:
 
     RBDynamics m_dyn;
     RBDynamics m_lastValid;
+    struct Switches {
+        bool rotationLocked = false, continuous = true, sleepAllowed = true;
+        float gravityScale = 1.0f;
+    } m_switches;
     iFrame* m_frame = nullptr;
     Matrix
         m_writtenWorld; // the frame's world() as this body last wrote or adopted it: a change is a game edit

@@ -17,6 +17,7 @@ set(GUARDIAN_PHYSICS_SOURCES
   WorldPoseCache.cpp
   RigidBody.cpp
   SceneDebugDraw.cpp
+  SceneSwitches.cpp
   ShockPropagation.cpp)
 set(GUARDIAN_PHYSICS_HEADERS
   BodyValidation.h
