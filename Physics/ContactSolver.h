@@ -98,9 +98,9 @@ public:
     // from what is left, or none; the bodies that entered stay and are still moved.
     void recollect(const CollisionContact* contacts, size_t count, const SolverBodyAccess& access);
     void dropManifolds();
-    void solve(float dt, const SolverBodyAccess& access);
+    void solve(Real dt, const SolverBodyAccess& access);
     // Both stages at once, for an access whose bodies are complete as they enter.
-    void solve(const CollisionContact* contacts, size_t count, float dt, const SolverBodyAccess& access) {
+    void solve(const CollisionContact* contacts, size_t count, Real dt, const SolverBodyAccess& access) {
         collect(contacts, count, access);
         solve(dt, access);
     }
@@ -131,26 +131,26 @@ private:
     void matchPreviousImpulses();
     void storeImpulses();
     // ContactSolver.cpp
-    void prepare(float dt);
+    void prepare(Real dt);
     void splitForces();
-    void addForces(float share);
+    void addForces(Real share);
     void warmStart(bool firstSubstep);
     // A point's normal target for one sweep: reach v_n = -bias, softly (Catto's soft constraint).
     struct Target {
-        float bias = 0, massScale = 1, impulseScale = 0;
+        Real bias = 0, massScale = 1, impulseScale = 0;
     };
-    void solveContacts(float h, bool pushOut);
-    void solveManifold(Manifold& m, float h, bool pushOut);
+    void solveContacts(Real h, bool pushOut);
+    void solveManifold(Manifold& m, Real h, bool pushOut);
     void solveNormal(Manifold& m, const Target* target, PairVelocity& pair);
     void solveFriction(Manifold& m, PairVelocity& pair);
     void saveVelocities();
-    void moveBodies(float h);
+    void moveBodies(Real h);
     void restoreVelocities();
     // ShockPropagation.cpp
     void orderByLevel();
-    void propagateShock(float h);
+    void propagateShock(Real h);
     // ContactRestitution.cpp
-    static void prepareBounce(const SolverBody& a, const SolverBody& b, ContactPoint& p, float dt);
+    static void prepareBounce(const SolverBody& a, const SolverBody& b, ContactPoint& p, Real dt);
     void findBounces();
     void applyRestitution();
     void projectDeepOverlaps();
@@ -165,10 +165,10 @@ private:
     FlatMap<PairKey, size_t, PairKeyHash> m_lastIndex; // into m_last
     FlatMap<PairKey, size_t, PairKeyHash> m_current;   // into m_manifolds, while they are built
     float m_maxDepthBefore = 0, m_maxDepthAfter = 0;
-    float m_dt = 0; // the step being solved
+    Real m_dt = 0; // the step being solved
     static constexpr int kProjectionIterations = 4;
     static constexpr int kRestitutionSweeps = 8;
-    static constexpr float kBounceGap = 1e-4f;      // m: a bouncing pair is left this far apart
+    static constexpr Real kBounceGap = 1e-4f;       // m: a bouncing pair is left this far apart
     std::vector<std::pair<size_t, int>> m_bouncing; // (manifold, point) of the points that bounce this step
     // Shock propagation: each body's contact distance from the immovable world, the manifolds each body is
     // in, and the manifolds between levels, lowest first, with whether b is the upper body.
@@ -177,9 +177,9 @@ private:
     std::vector<int> m_scratch;
     std::vector<char> m_carries, m_keep;
     std::vector<std::pair<size_t, bool>> m_shock;
-    static constexpr float kHeavyRatio = 10.0f; // shock propagation acts under a body this much heavier
+    static constexpr Real kHeavyRatio = 10.0f; // shock propagation acts under a body this much heavier
     // The soft contact for the current sub-step length.
-    float m_biasRate = 0, m_massScale = 1, m_impulseScale = 0;
+    Real m_biasRate = 0, m_massScale = 1, m_impulseScale = 0;
 };
 
 } // namespace physics
