@@ -6,7 +6,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 rounds=${1:-3}
-cmake -S . -B build-rel -DCMAKE_BUILD_TYPE=Release -DGUARDIAN_WERROR=ON -DGUARDIAN_BUILD_TESTBED=OFF >/dev/null
+cmake -S . -B build-rel -DCMAKE_BUILD_TYPE=Release -DGUARDIAN_WERROR=OFF -DGUARDIAN_BUILD_TESTBED=OFF >/dev/null
 cmake --build build-rel -j "$(nproc 2>/dev/null || echo 2)" --target precision_report precision_report_double
 dir=build-rel/tests/double
 "$dir/precision_report" 1
