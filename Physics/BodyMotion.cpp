@@ -49,7 +49,7 @@ bool RigidBody::moveTo(const Vector& position, const Matrix& orientation, float 
     // The rotation still to go, in world axes: target = delta * current.
     Quat delta = toQuat(orientation) * toQuat(m_dyn.orientation).conjugate();
     if (delta.w() < 0) delta.coeffs() = -delta.coeffs(); // the short way round
-    Eigen::AngleAxisf turn(delta.normalized());
+    Eigen::AngleAxis<Real> turn(delta.normalized());
     m_dyn.velocity = (position - m_dyn.position) / seconds;
     m_dyn.angularVelocity = toVector(turn.axis() * (turn.angle() / seconds));
     wake();

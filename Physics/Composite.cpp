@@ -60,9 +60,9 @@ void buildComposite(RigidBody* rootBody, const std::unordered_map<const RBDynami
         mass += p.dyn->mass;
         weighted += double(p.dyn->mass) * p.position.cast<double>();
     }
-    Vec3 centre = out.kinematic ? Vec3::Zero() : Vec3((weighted / mass).cast<float>());
-    out.mass = out.kinematic ? INFINITE_MASS : float(mass);
-    out.invMass = out.kinematic ? 0.0f : float(1.0 / mass);
+    Vec3 centre = out.kinematic ? Vec3::Zero() : Vec3((weighted / mass).cast<Real>());
+    out.mass = out.kinematic ? INFINITE_MASS : Real(mass);
+    out.invMass = out.kinematic ? Real(0) : Real(1.0 / mass);
     out.rootOffset = -centre;
 
     if (placed.size() == 1) { // an unattached body: its own tensors, no parallel-axis sum
@@ -78,10 +78,10 @@ void buildComposite(RigidBody* rootBody, const std::unordered_map<const RBDynami
                 inertia +=
                     double(p.dyn->mass) * (d.squaredNorm() * Eigen::Matrix3d::Identity() - d * d.transpose());
         }
-        out.inertia = inertia.cast<float>();
+        out.inertia = inertia.cast<Real>();
         bool locked = false; // a part with a zero inverse tensor locks the composite's rotation
         for (const Placed& p : placed) locked = locked || isRotationLock(p.dyn->getInverseInertiaTensor());
-        out.invInertia = locked ? Mat3(Mat3::Zero()) : Mat3(inertia.inverse().cast<float>());
+        out.invInertia = locked ? Mat3(Mat3::Zero()) : Mat3(inertia.inverse().cast<Real>());
     }
 
     bool locked = false; // rotation locked by a part's switch

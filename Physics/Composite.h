@@ -23,12 +23,12 @@ struct CompositePart {
     Mat3 relRot;      // part rotation relative to the root: R_part = R_root * relRot
     Vec3 constForce;  // force + temporalForce + mass * acceleration (world, through the part's COM)
     Vec3 constTorque; // torque + temporalTorque (world)
-    float dragK;      // 1/2 rho Cd A of the part's drag law
+    Real dragK;       // 1/2 rho Cd A of the part's drag law
 };
 
 struct Composite {
     RBDynamics* root = nullptr;
-    float mass = 0, invMass = 0;
+    Real mass = 0, invMass = 0;
     Mat3 inertia = Mat3::Identity(), invInertia = Mat3::Identity(); // local, about C
     Vec3 rootOffset = Vec3::Zero();                                 // root's own COM - C, root axes
     Vec3 gravity = Vec3::Zero();                                    // zero unless the root is PHYS_Falling

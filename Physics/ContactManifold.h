@@ -13,9 +13,9 @@ struct RBDynamics;
 
 namespace physics {
 
-// Four floats, the last 0: a row's vectors in the solver's inner loop, one SSE register each (Eigen
+// Four Reals, the last 0: a row's vectors in the solver's inner loop, one SSE register each in float (Eigen
 // vectorises fixed 4-float vectors; a Vec3's components are shuffled in and out one at a time).
-using Vec4 = Eigen::Vector4f;
+using Vec4 = Eigen::Matrix<Real, 4, 1>;
 inline Vec4 wide(const Vec3& v) { return Vec4(v.x(), v.y(), v.z(), 0.0f); }
 inline Vec3 narrow(const Vec4& v) { return v.head<3>(); }
 
@@ -38,7 +38,7 @@ struct SolverBody {
     Vec3 dv = Vec3::Zero(), dw = Vec3::Zero();
     // The sub-step's solved velocities, before the push out (which moves the body but is not kept).
     Vec3 vSolved = Vec3::Zero(), wSolved = Vec3::Zero();
-    float invMass = 0;
+    Real invMass = 0;
     Mat3 invInertia = Mat3::Zero();
     // Projected out of a deep overlap this step: a correction, not motion, so a collision space must not
     // sweep along it (the pose is stored as a teleport, RBDynamics::teleports); the move it made.
@@ -60,15 +60,15 @@ struct ContactPoint {
          armB[3] = {Vec4::Zero(), Vec4::Zero(), Vec4::Zero()};
     Vec4 turnA[3] = {Vec4::Zero(), Vec4::Zero(), Vec4::Zero()},
          turnB[3] = {Vec4::Zero(), Vec4::Zero(), Vec4::Zero()};
-    float normalMass = 0, tangentMass[2] = {0, 0};
-    float normalImpulse = 0, tangentImpulse[2] = {0, 0}; // accumulated, per sub-step
-    float solvedImpulse[3] = {0, 0, 0}; // normal and tangent impulses before the sub-step's push out
-    float gap = 0;                      // its separation at the sub-step's poses (the solve measures it)
-    float approachSpeed = 0;            // v_n when the solve began (negative: approaching), for restitution
-    float forceSpeed = 0;               // what this step's forces added to v_n (a_n dt)
-    float touchSpeed2 = 0;              // v_n^2 at the moment the point touched (the energy a bounce returns)
-    float maxNormalImpulse = 0;         // over the sub-steps: a point that never pushed does not bounce
-    bool bounced = false;               // it bounced: it left the surface and is not kept next step
+    Real normalMass = 0, tangentMass[2] = {0, 0};
+    Real normalImpulse = 0, tangentImpulse[2] = {0, 0}; // accumulated, per sub-step
+    Real solvedImpulse[3] = {0, 0, 0}; // normal and tangent impulses before the sub-step's push out
+    Real gap = 0;                      // its separation at the sub-step's poses (the solve measures it)
+    Real approachSpeed = 0;            // v_n when the solve began (negative: approaching), for restitution
+    Real forceSpeed = 0;               // what this step's forces added to v_n (a_n dt)
+    Real touchSpeed2 = 0;              // v_n^2 at the moment the point touched (the energy a bounce returns)
+    Real maxNormalImpulse = 0;         // over the sub-steps: a point that never pushed does not bounce
+    bool bounced = false;              // it bounced: it left the surface and is not kept next step
 };
 
 struct Manifold {
@@ -80,14 +80,14 @@ struct Manifold {
     // Carried unsolved while both bodies rest (asleep or fixed): an island that wakes starts from its
     // impulses, as it would have had it stayed awake.
     bool dormant = false;
-    float friction = 0, restitution = 0;
+    Real friction = 0, restitution = 0;
     // The smaller shape's bounding radius (infinite for two planes' worth): what a resting overlap is
     // measured against (SolverSettings::restingOverlap). Known when the pair is reported, kept with it.
-    float size = 0;
+    Real size = 0;
     // The soft contact of this pair for the step's sub-step (ContactSolver::contactSoftness).
-    float biasRate = 0, massScale = 1, impulseScale = 0;
-    bool bounces = false;  // a point bounces this step: its overlap is projected out entirely
-    float projectable = 0; // how much further its overlap may still be projected out this step
+    Real biasRate = 0, massScale = 1, impulseScale = 0;
+    bool bounces = false; // a point bounces this step: its overlap is projected out entirely
+    Real projectable = 0; // how much further its overlap may still be projected out this step
     int count = 0;
     ContactPoint points[4];
 };

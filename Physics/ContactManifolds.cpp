@@ -103,7 +103,7 @@ void ContactSolver::buildManifolds(const CollisionContact* contacts, size_t coun
 void ContactSolver::keepPoints(const SolverBodyAccess& access,
                                const FlatMap<PairKey, size_t, PairKeyHash>& reported) {
     if (m_settings.keepDistance <= 0.0f) return;
-    const float keep = m_settings.keepDistance, match2 = m_settings.matchDistance * m_settings.matchDistance;
+    const Real keep = m_settings.keepDistance, match2 = m_settings.matchDistance * m_settings.matchDistance;
     // Appends to m the points of old that m lacks and that are apart by less than keep.
     auto keepFrom = [&](const Manifold& old, Manifold& m) {
         const SolverBody &a = m_bodies[m.a], &b = m_bodies[m.b];
@@ -117,7 +117,7 @@ void ContactSolver::keepPoints(const SolverBodyAccess& access,
                 known = (m.points[i].anchorA - o.anchorA).squaredNorm() <= match2;
             if (known) continue;
             Vec3 onA = startPoint(a, o.anchorA), onB = startPoint(b, o.anchorB), gap = onB - onA;
-            float separation = n.dot(gap);
+            Real separation = n.dot(gap);
             if (separation <= 0.0f || separation > keep || (gap - separation * n).norm() > keep)
                 continue; // touching again is the detector's to report; too far apart or slid off: broken
             ContactPoint p = o;
@@ -155,7 +155,7 @@ void ContactSolver::keepPoints(const SolverBodyAccess& access,
 }
 
 void ContactSolver::matchPreviousImpulses() {
-    const float best0 = m_settings.matchDistance * m_settings.matchDistance;
+    const Real best0 = m_settings.matchDistance * m_settings.matchDistance;
     for (Manifold& m : m_manifolds) {
         const size_t* last = m_settings.warmStart ? m_lastIndex.find(PairKey{m.g1, m.g2}) : nullptr;
         if (!last) continue;
@@ -164,9 +164,9 @@ void ContactSolver::matchPreviousImpulses() {
             ContactPoint& p = m.points[i];
             // The old point at the same place on body a.
             const ContactPoint* match = nullptr;
-            float best = best0;
+            Real best = best0;
             for (int j = 0; j < old.count; ++j) {
-                float d2 = (old.points[j].anchorA - p.anchorA).squaredNorm();
+                Real d2 = (old.points[j].anchorA - p.anchorA).squaredNorm();
                 if (d2 <= best) {
                     best = d2;
                     match = &old.points[j];

@@ -22,7 +22,7 @@ SolverBody SceneBodyAccess::enter(RBDynamics* root, int slot) const {
     b.root = root;
     RigidBody* body = bodyOf(root);
     // The contacts were found at the step's starting poses: anchors are measured there.
-    b.startOrigin = body ? toEigen(body->previousPosition()) : toEigen(root->position);
+    b.startOrigin = body ? body->startPosition() : toEigen(root->position);
     b.startRotation = body ? body->previousRotation() : toQuat(root->orientation);
     const bool moves = body && !body->asleep() && !body->dying() && !body->pendingRemoval &&
                        root->physicsType != PHYS_FixedInSpace && !isKinematicChain(*root);
@@ -38,11 +38,11 @@ SolverBody SceneBodyAccess::enter(RBDynamics* root, int slot) const {
 
 void SceneBodyAccess::refresh(SolverBody& b) const {
     const RBDynamics& d = *b.root;
-    b.com = b.origin = toEigen(d.position);
-    b.rotation = toQuat(d.orientation);
     RigidBody* body = bodyOf(b.root);
+    b.com = b.origin = body ? body->statePosition() : toEigen(d.position);
+    b.rotation = toQuat(d.orientation);
     const bool still = body && body->asleep();
-    b.v = still ? Vec3::Zero() : toEigen(d.velocity);
+    b.v = still ? Vec3::Zero() : body ? body->stateVelocity() : toEigen(d.velocity);
     b.w = still ? Vec3::Zero() : toEigen(d.angularVelocity);
 }
 
@@ -79,9 +79,17 @@ void SceneBodyAccess::storeVelocity(const SolverBody& b) const {
     const Mass& m = *m_mass.find(b.root); // load() recorded every movable body
     Mat3 r = b.rotation.toRotationMatrix();
     Vec3 arm = r * m.rootOffset;
+    const Vec3 momentum = r * m.inertia * r.transpose() * b.w;
     b.root->angularVelocity = toVector(b.w);
-    b.root->velocity = toVector(b.v + b.w.cross(arm));
-    b.root->angularMomentum = toVector(r * m.inertia * r.transpose() * b.w);
+    m.body->writeVelocity(b.v + b.w.cross(arm));
+    b.root->angularMomentum = toVector(momentum);
+    m.body->own.omega = b.w;
+    m.body->own.momentum = momentum;
+}
+
+void SceneBodyAccess::storePose(const SolverBody& b) const {
+    SolverBodyAccess::storePose(b);
+    if (const Mass* m = m_mass.find(b.root)) m->body->writePosition(b.origin);
 }
 
 void SceneBodyAccess::acceptWrites(const std::vector<SolverBody>& bodies) const {
@@ -212,6 +220,7 @@ void Islands::updateSleep(const std::vector<RigidBody*>& bodies, float dt) {
         b->setAsleep(true);
         d.velocity = d.angularVelocity = d.angularMomentum = Vector();
         b->writtenOmega = b->writtenMomentum = Vector();
+        b->own.omega = b->own.momentum = Vec3::Zero();
     }
 }
 

@@ -40,6 +40,7 @@ public:
     void setMotion(SolverBody& b, RigidBody* body, const Composite& c, const Vec3& v, const Vec3& w,
                    const Vec3& dv, const Vec3& dw) const;
     void storeVelocity(const SolverBody& b) const override;
+    void storePose(const SolverBody& b) const override; // and the body's own Real pose (RigidBody.h)
     bool alive(const RBDynamics* root) const override;
     bool resting(const RBDynamics* root) const override;
     // Records the solver's writes as the simulator's own, so the next step does not take them for edits;

@@ -29,18 +29,18 @@
 namespace physics {
 
 // p's rows and approachSpeed (v_n after this step's forces) are set.
-void ContactSolver::prepareBounce(const SolverBody& a, const SolverBody& b, ContactPoint& p, float dt) {
+void ContactSolver::prepareBounce(const SolverBody& a, const SolverBody& b, ContactPoint& p, Real dt) {
     p.forceSpeed = p.normal.dot(b.dv - a.dv) + narrow(p.armB[0]).dot(b.dw) - narrow(p.armA[0]).dot(a.dw);
-    const float startSpeed = p.approachSpeed - 0.5f * p.forceSpeed;
-    const float startSeparation = p.normal.dot(startPoint(b, p.anchorB) - startPoint(a, p.anchorA));
-    const float accel = dt > 0.0f ? p.forceSpeed / dt : 0.0f;
-    p.touchSpeed2 = std::max(0.0f, startSpeed * startSpeed - 2.0f * accel * startSeparation);
+    const Real startSpeed = p.approachSpeed - 0.5f * p.forceSpeed;
+    const Real startSeparation = p.normal.dot(startPoint(b, p.anchorB) - startPoint(a, p.anchorA));
+    const Real accel = dt > 0.0f ? p.forceSpeed / dt : 0.0f;
+    p.touchSpeed2 = std::max(Real(0), startSpeed * startSpeed - 2.0f * accel * startSeparation);
 }
 
 // The points that approached faster than the threshold and pushed in some sub-step bounce (after the
 // sub-steps, so a resting contact never bounces).
 void ContactSolver::findBounces() {
-    const float threshold = -m_settings.restitutionThreshold;
+    const Real threshold = -m_settings.restitutionThreshold;
     m_bouncing.clear();
     for (size_t k = 0; k < m_manifolds.size(); ++k) {
         Manifold& m = m_manifolds[k];
@@ -56,19 +56,19 @@ void ContactSolver::findBounces() {
 // Each bouncing point leaves at the speed above. The bouncing points are swept several times, alternately
 // forward and backward: one sweep over a box's four corners spun a box that landed flat at 4.3 rad/s.
 void ContactSolver::applyRestitution() {
-    const float dt = m_dt;
+    const Real dt = m_dt;
     for (int sweep = 0; sweep < kRestitutionSweeps && !m_bouncing.empty(); ++sweep) {
         for (size_t j = 0; j < m_bouncing.size(); ++j) {
             const auto& [k, i] = m_bouncing[sweep % 2 ? m_bouncing.size() - 1 - j : j];
             Manifold& m = m_manifolds[k];
             ContactPoint& p = m.points[i];
             SolverBody &a = m_bodies[m.a], &b = m_bodies[m.b];
-            const float accel = dt > 0.0f ? p.forceSpeed / dt : 0.0f;
-            const float e = m.restitution;
-            const float leave2 = e * e * p.touchSpeed2 + 2.0f * accel * separation(a, b, p);
-            const float target = std::sqrt(std::max(0.0f, leave2)) - 0.5f * p.forceSpeed;
-            float vn = relativeSpeed<0>(a, b, p);
-            float total = std::max(0.0f, p.normalImpulse - p.normalMass * (vn - target));
+            const Real accel = dt > 0.0f ? p.forceSpeed / dt : 0.0f;
+            const Real e = m.restitution;
+            const Real leave2 = e * e * p.touchSpeed2 + 2.0f * accel * separation(a, b, p);
+            const Real target = std::sqrt(std::max(Real(0), leave2)) - 0.5f * p.forceSpeed;
+            Real vn = relativeSpeed<0>(a, b, p);
+            Real total = std::max(Real(0), p.normalImpulse - p.normalMass * (vn - target));
             applyImpulse<0>(a, b, p, total - p.normalImpulse);
             p.normalImpulse = total;
             p.bounced = true;
@@ -95,13 +95,13 @@ void ContactSolver::projectDeepOverlaps() {
     for (int iteration = 0; moved && iteration < kProjectionIterations; ++iteration) {
         moved = false;
         for (Manifold& m : m_manifolds) {
-            const float allowed = m.bounces ? -m_settings.bounceGap : m_settings.deepOverlap;
+            const Real allowed = m.bounces ? -m_settings.bounceGap : m_settings.deepOverlap;
             SolverBody &a = m_bodies[m.a], &b = m_bodies[m.b];
-            float excess = 0;
+            Real excess = 0;
             for (int i = 0; i < m.count; ++i)
                 excess = std::max(excess, -separation(a, b, m.points[i]) - allowed);
             excess = std::min(excess, m.projectable);
-            float invMass = a.invMass + b.invMass;
+            Real invMass = a.invMass + b.invMass;
             if (excess <= 0.0f || invMass <= 0.0f) continue;
             m.projectable -= excess;
             moved = true;

@@ -107,22 +107,22 @@ void ContactSolver::recollect(const CollisionContact* contacts, size_t count,
 
 void ContactSolver::dropManifolds() { m_manifolds.clear(); }
 
-void ContactSolver::solve(float dt, const SolverBodyAccess& access) {
+void ContactSolver::solve(Real dt, const SolverBodyAccess& access) {
     for (SolverBody& b : m_bodies)
         if (b.root && !movable(b)) access.refresh(b); // a kinematic body has moved since it entered
     applySwitches();
     const int n = std::max(1, m_settings.substeps);
-    const float h = dt / float(n);
+    const Real h = dt / Real(n);
     m_dt = dt;
     // The soft contact (a damped spring in impulse form, Catto's "Soft Step"): stiff, but never stiffer than
     // a quarter of the sub-step rate can follow (a small shape's contact excepted: contactSoftness).
-    m_omega = 2.0f * 3.14159265f * std::min(m_settings.contactHertz, 0.25f / h);
+    m_omega = 2.0f * 3.14159265f * std::min(Real(m_settings.contactHertz), 0.25f / h);
     m_soft = softness(m_omega, m_settings.dampingRatio, h);
     prepare(dt, h);
     orderByLevel();
     splitForces();
     for (int i = 0; i < n; ++i) {
-        addForces(1.0f / float(n));
+        addForces(1.0f / Real(n));
         warmStart(i == 0);
         solveContacts(h, false); // the velocities: approach stopped, nothing pushed
         propagateShock(h);       // what a light body under a heavy one could not stop
@@ -155,22 +155,23 @@ void ContactSolver::applySwitches() {
     }
 }
 
-ContactSolver::Softness ContactSolver::softness(float omega, float dampingRatio, float h) {
-    const float a1 = 2.0f * dampingRatio + h * omega, a2 = h * omega * a1, a3 = 1.0f / (1.0f + a2);
+ContactSolver::Softness ContactSolver::softness(Real omega, Real dampingRatio, Real h) {
+    const Real a1 = 2.0f * dampingRatio + h * omega, a2 = h * omega * a1, a3 = 1.0f / (1.0f + a2);
     return Softness{omega / a1, a2 * a3, a3};
 }
 
 // A resting contact gives |g| / w^2 whatever the bodies' size: a pair whose smaller shape is so small that
 // this is more than restingOverlap of its radius gets the stiffness that makes it so, up to maxContactTurn
 // a sub-step. Metre-sized shapes keep the world's softness, bit for bit.
-ContactSolver::Softness ContactSolver::contactSoftness(const Manifold& m, float h) const {
-    const float allowed = m_settings.restingOverlap * m.size;
+ContactSolver::Softness ContactSolver::contactSoftness(const Manifold& m, Real h) const {
+    const Real allowed = m_settings.restingOverlap * m.size;
     if (!(allowed > 0.0f) || !(m_settings.gravity > allowed * m_omega * m_omega)) return m_soft;
-    const float omega = std::min(std::sqrt(m_settings.gravity / allowed), m_settings.maxContactTurn / h);
+    const Real omega =
+        std::min(Real(std::sqrt(m_settings.gravity / allowed)), Real(m_settings.maxContactTurn / h));
     return omega > m_omega ? softness(omega, m_settings.dampingRatio, h) : m_soft;
 }
 
-void ContactSolver::prepare(float dt, float h) {
+void ContactSolver::prepare(Real dt, Real h) {
     for (Manifold& m : m_manifolds) {
         const SolverBody &a = m_bodies[m.a], &b = m_bodies[m.b];
         const Softness soft = contactSoftness(m, h);
@@ -182,7 +183,7 @@ void ContactSolver::prepare(float dt, float h) {
             ContactPoint& p = m.points[i];
             p.rA = p.point - a.com;
             p.rB = p.point - b.com;
-            float masses[3] = {0, 0, 0};
+            Real masses[3] = {0, 0, 0};
             for (int row = 0; row < rows; ++row) {
                 const Vec3& d = row == 0 ? p.normal : p.tangent[row - 1];
                 const Vec3 armA = p.rA.cross(d), armB = p.rB.cross(d);
@@ -192,7 +193,7 @@ void ContactSolver::prepare(float dt, float h) {
                 p.armB[row] = wide(armB);
                 p.turnA[row] = wide(turnA);
                 p.turnB[row] = wide(turnB);
-                float k = a.invMass + b.invMass + armA.dot(turnA) + armB.dot(turnB);
+                Real k = a.invMass + b.invMass + armA.dot(turnA) + armB.dot(turnB);
                 masses[row] = k > 0.0f ? 1.0f / k : 0.0f;
             }
             p.normalMass = masses[0];
@@ -215,7 +216,7 @@ void ContactSolver::splitForces() {
     }
 }
 
-void ContactSolver::addForces(float share) {
+void ContactSolver::addForces(Real share) {
     for (SolverBody& b : m_bodies) {
         if (!movable(b)) continue;
         b.v += share * b.dv;
@@ -229,7 +230,7 @@ void ContactSolver::addForces(float share) {
 // again and bound friction by it (a box landing at 4 m/s while sliding hopped 0.06 m/s and lost 7 % more
 // slide than Coulomb's law allows).
 void ContactSolver::warmStart(bool firstSubstep) {
-    const float impact = -m_settings.restitutionThreshold;
+    const Real impact = -m_settings.restitutionThreshold;
     for (Manifold& m : m_manifolds) {
         SolverBody &a = m_bodies[m.a], &b = m_bodies[m.b];
         PairVelocity pair(a, b);
@@ -258,11 +259,11 @@ void ContactSolver::warmStart(bool firstSubstep) {
 //    first), and friction answers the turning: it bounced off sideways, 0.15 rad/s and 20 cm in 4 s. After
 //    two passes, 0.001 rad/s and 1 cm.
 // pushOut: overlap is pushed out softly; otherwise (relax) only approach is stopped.
-void ContactSolver::solveContacts(float h, bool pushOut) {
+void ContactSolver::solveContacts(Real h, bool pushOut) {
     for (Manifold& m : m_manifolds) solveManifold(m, h, pushOut);
 }
 
-void ContactSolver::solveManifold(Manifold& m, float h, bool pushOut) {
+void ContactSolver::solveManifold(Manifold& m, Real h, bool pushOut) {
     SolverBody &a = m_bodies[m.a], &b = m_bodies[m.b];
     // Positions do not change within a sweep, nor between the velocity sweep and the push out that follows
     // it: each point's gap is measured once for both, and its target worked out once a sweep.
@@ -270,7 +271,7 @@ void ContactSolver::solveManifold(Manifold& m, float h, bool pushOut) {
     for (int i = 0; i < m.count; ++i) {
         ContactPoint& p = m.points[i];
         if (!pushOut) p.gap = separation(a, b, p);
-        const float gap = p.gap;
+        const Real gap = p.gap;
         if (gap > 0.0f) {
             target[i].bias = gap / h; // apart: may close the gap within the sub-step, no more
         } else if (gap > -m_settings.touchOverlap && p.approachSpeed < -m_settings.restitutionThreshold) {
@@ -279,7 +280,8 @@ void ContactSolver::solveManifold(Manifold& m, float h, bool pushOut) {
             // push-out pass, where the approach is already stopped: a soft target there relaxes the impact's
             // accumulated impulse and lets the same few % through.
         } else if (pushOut) {
-            target[i] = {std::max(m.biasRate * gap, -m_settings.maxPushSpeed), m.massScale, m.impulseScale};
+            target[i] = {std::max(m.biasRate * gap, Real(-m_settings.maxPushSpeed)), m.massScale,
+                         m.impulseScale};
         }
     }
     PairVelocity pair(a, b);
@@ -294,9 +296,9 @@ GUARDIAN_HOT void ContactSolver::solveNormal(Manifold& m, const Target* target, 
     for (int i = 0; i < m.count; ++i) {
         ContactPoint& p = m.points[i];
         const Target& t = target[i];
-        float vn = pair.speed<0>(p);
-        float change = -p.normalMass * t.massScale * (vn + t.bias) - t.impulseScale * p.normalImpulse;
-        float total = std::max(0.0f, p.normalImpulse + change); // push only, never pull
+        Real vn = pair.speed<0>(p);
+        Real change = -p.normalMass * t.massScale * (vn + t.bias) - t.impulseScale * p.normalImpulse;
+        Real total = std::max(Real(0), p.normalImpulse + change); // push only, never pull
         pair.apply<0>(p, total - p.normalImpulse);
         p.normalImpulse = total;
         p.maxNormalImpulse = std::max(p.maxNormalImpulse, total);
@@ -306,8 +308,8 @@ GUARDIAN_HOT void ContactSolver::solveNormal(Manifold& m, const Target* target, 
 GUARDIAN_HOT void ContactSolver::solveFriction(Manifold& m, PairVelocity& pair) {
     for (int i = 0; i < m.count; ++i) {
         ContactPoint& p = m.points[i];
-        const float limit = m.friction * p.normalImpulse; // Coulomb's cone as a box
-        float total = std::clamp(p.tangentImpulse[0] - pair.speed<1>(p) * p.tangentMass[0], -limit, limit);
+        const Real limit = m.friction * p.normalImpulse; // Coulomb's cone as a box
+        Real total = std::clamp(p.tangentImpulse[0] - pair.speed<1>(p) * p.tangentMass[0], -limit, limit);
         pair.apply<1>(p, total - p.tangentImpulse[0]);
         p.tangentImpulse[0] = total;
         total = std::clamp(p.tangentImpulse[1] - pair.speed<2>(p) * p.tangentMass[1], -limit, limit);
@@ -350,14 +352,14 @@ void ContactSolver::restoreVelocities() {
 // Each contact caps its own push, but a body pushed by many (a crowd spawned at one point) gathered theirs:
 // a chain of coincident bodies, each pair pushed apart at 3 m/s, spread at 3 m/s per body, and the relax
 // that was to take the push's velocity back converged too slowly to do it (1,000 spheres left at 669 m/s).
-void ContactSolver::moveBodies(float h) {
-    const float cap = m_settings.maxPushSpeed;
+void ContactSolver::moveBodies(Real h) {
+    const Real cap = m_settings.maxPushSpeed;
     for (SolverBody& b : m_bodies) {
         if (!movable(b)) continue;
         Vec3 push = b.v - b.vSolved, turn = b.w - b.wSolved;
-        const float speed = push.norm();
+        const Real speed = push.norm();
         if (speed > cap) {
-            const float scale = cap / speed;
+            const Real scale = cap / speed;
             push *= scale;
             turn *= scale;
         }
@@ -370,7 +372,7 @@ void ContactSolver::measureOverlap() {
     for (const Manifold& m : m_manifolds)
         for (int i = 0; i < m.count; ++i) {
             const ContactPoint& p = m.points[i];
-            m_maxDepthAfter = std::max(m_maxDepthAfter, -separation(m_bodies[m.a], m_bodies[m.b], p));
+            m_maxDepthAfter = std::max(m_maxDepthAfter, float(-separation(m_bodies[m.a], m_bodies[m.b], p)));
         }
 }
 

@@ -115,9 +115,9 @@ public:
     // from what is left, or none; the bodies that entered stay and are still moved.
     void recollect(const CollisionContact* contacts, size_t count, const SolverBodyAccess& access);
     void dropManifolds();
-    void solve(float dt, const SolverBodyAccess& access);
+    void solve(Real dt, const SolverBodyAccess& access);
     // Both stages at once, for an access whose bodies are complete as they enter.
-    void solve(const CollisionContact* contacts, size_t count, float dt, const SolverBodyAccess& access) {
+    void solve(const CollisionContact* contacts, size_t count, Real dt, const SolverBodyAccess& access) {
         collect(contacts, count, access);
         solve(dt, access);
     }
@@ -149,26 +149,26 @@ private:
     void storeImpulses();
     // ContactSolver.cpp
     void applySwitches();
-    void prepare(float dt, float h);
+    void prepare(Real dt, Real h);
     void splitForces();
-    void addForces(float share);
+    void addForces(Real share);
     void warmStart(bool firstSubstep);
     // A point's normal target for one sweep: reach v_n = -bias, softly (Catto's soft constraint).
     struct Target {
-        float bias = 0, massScale = 1, impulseScale = 0;
+        Real bias = 0, massScale = 1, impulseScale = 0;
     };
-    void solveContacts(float h, bool pushOut);
-    void solveManifold(Manifold& m, float h, bool pushOut);
+    void solveContacts(Real h, bool pushOut);
+    void solveManifold(Manifold& m, Real h, bool pushOut);
     void solveNormal(Manifold& m, const Target* target, PairVelocity& pair);
     void solveFriction(Manifold& m, PairVelocity& pair);
     void saveVelocities();
-    void moveBodies(float h);
+    void moveBodies(Real h);
     void restoreVelocities();
     // ShockPropagation.cpp
     void orderByLevel();
-    void propagateShock(float h);
+    void propagateShock(Real h);
     // ContactRestitution.cpp
-    static void prepareBounce(const SolverBody& a, const SolverBody& b, ContactPoint& p, float dt);
+    static void prepareBounce(const SolverBody& a, const SolverBody& b, ContactPoint& p, Real dt);
     void findBounces();
     void applyRestitution();
     void projectDeepOverlaps();
@@ -183,7 +183,7 @@ private:
     FlatMap<PairKey, size_t, PairKeyHash> m_lastIndex; // into m_last
     FlatMap<PairKey, size_t, PairKeyHash> m_current;   // into m_manifolds, while they are built
     float m_maxDepthBefore = 0, m_maxDepthAfter = 0;
-    float m_dt = 0; // the step being solved
+    Real m_dt = 0; // the step being solved
     static constexpr int kProjectionIterations = 4;
     static constexpr int kRestitutionSweeps = 8;
     std::vector<std::pair<size_t, int>> m_bouncing; // (manifold, point) of the points that bounce this step
@@ -194,16 +194,16 @@ private:
     std::vector<int> m_scratch;
     std::vector<char> m_carries, m_keep;
     std::vector<std::pair<size_t, bool>> m_shock;
-    static constexpr float kHeavyRatio = 10.0f; // shock propagation acts under a body this much heavier
+    static constexpr Real kHeavyRatio = 10.0f; // shock propagation acts under a body this much heavier
     // The soft contact for the current sub-step length: the world's, and a manifold's own (stiffer for a
     // small shape; SolverSettings::restingOverlap).
     struct Softness {
-        float biasRate = 0, massScale = 1, impulseScale = 0;
+        Real biasRate = 0, massScale = 1, impulseScale = 0;
     };
-    static Softness softness(float omega, float dampingRatio, float h);
-    Softness contactSoftness(const Manifold& m, float h) const;
+    static Softness softness(Real omega, Real dampingRatio, Real h);
+    Softness contactSoftness(const Manifold& m, Real h) const;
     Softness m_soft;
-    float m_omega = 0;
+    Real m_omega = 0;
 };
 
 } // namespace physics

@@ -14,13 +14,13 @@
 
 namespace physics {
 
-Quat rotateBy(const Quat& q, const Vec3& omega, float dt) {
-    float angle = omega.norm() * dt;
+Quat rotateBy(const Quat& q, const Vec3& omega, Real dt) {
+    Real angle = omega.norm() * dt;
     if (!(angle > 0.0f)) return q;
-    return (Quat(Eigen::AngleAxisf(angle, omega / omega.norm())) * q).normalized();
+    return (Quat(Eigen::AngleAxis<Real>(angle, omega / omega.norm())) * q).normalized();
 }
 
-Derivative evaluate(const Composite& c, const MotionState& s, float t) {
+Derivative evaluate(const Composite& c, const MotionState& s, Real t) {
     Derivative d;
     Mat3 r = s.q.toRotationMatrix();
     d.omega = c.rotationLocked ? Vec3(Vec3::Zero()) : Vec3(r * c.invInertia * r.transpose() * s.L);
@@ -58,7 +58,7 @@ namespace {
 // rotation group). w = R I^-1 R^T L depends on the rotation itself; using the start-of-step w makes a free
 // asymmetric body drift in energy at first order (1.7% over 10 s at 120 Hz in the torque-free test), the
 // midpoint makes it second order. One extra tensor rotation a body-step.
-Quat rotateMidpoint(const Composite& c, const Quat& q, const Vec3& L, float dt) {
+Quat rotateMidpoint(const Composite& c, const Quat& q, const Vec3& L, Real dt) {
     Quat half = rotateBy(q, worldInverseInertia(c, q) * L, 0.5f * dt);
     return rotateBy(q, worldInverseInertia(c, half) * L, dt);
 }
@@ -110,10 +110,10 @@ Quat keepRotationalEnergy(const Composite& c, const Quat& qStart, const Quat& q,
         if (move > 0.25 * r) t *= 0.25 * r / move;
         b = (b + t * g).normalized() * r;
     }
-    return (q * Quat(shortestArc(b, end).cast<float>())).normalized();
+    return (q * Quat(shortestArc(b, end).cast<Real>())).normalized();
 }
 
-void explicitEuler(const Composite& c, MotionState& s, float dt) {
+void explicitEuler(const Composite& c, MotionState& s, Real dt) {
     Derivative d = evaluate(c, s, 0);
     s.x += s.v * dt; // the old velocity: this is what makes it "explicit" (and energy-gaining)
     s.v += d.acceleration * dt;
@@ -122,7 +122,7 @@ void explicitEuler(const Composite& c, MotionState& s, float dt) {
     s.L += d.torque * dt;
 }
 
-void semiImplicitEuler(const Composite& c, MotionState& s, float dt) {
+void semiImplicitEuler(const Composite& c, MotionState& s, Real dt) {
     Derivative d = evaluate(c, s, 0);
     s.v += d.acceleration * dt; // velocities first ...
     s.L += d.torque * dt;
@@ -130,11 +130,11 @@ void semiImplicitEuler(const Composite& c, MotionState& s, float dt) {
     if (!c.rotationLocked) s.q = keepRotationalEnergy(c, s.q, rotateMidpoint(c, s.q, s.L, dt), s.L);
 }
 
-void velocityVerlet(const Composite& c, MotionState& s, float dt) {
+void velocityVerlet(const Composite& c, MotionState& s, Real dt) {
     // Kick-drift-kick. A velocity-dependent force (drag) at the second kick is taken at the half-step
     // velocity, the usual explicit approximation; position-only forces keep the scheme exact to O(dt^2).
     Derivative d0 = evaluate(c, s, 0);
-    float h = 0.5f * dt;
+    Real h = 0.5f * dt;
     s.x += s.v * dt + d0.acceleration * (h * dt);
     s.v += d0.acceleration * h;
     s.L += d0.torque * h;
@@ -145,7 +145,7 @@ void velocityVerlet(const Composite& c, MotionState& s, float dt) {
 }
 
 // q + dq/dt * h, renormalised (the quaternion's own RK stages).
-Quat advanceQuat(const Quat& q, const Vec3& omega, float h) {
+Quat advanceQuat(const Quat& q, const Vec3& omega, Real h) {
     Quat w(0.0f, omega.x(), omega.y(), omega.z());
     Quat dq = w * q;
     return Quat(q.w() + 0.5f * h * dq.w(), q.x() + 0.5f * h * dq.x(), q.y() + 0.5f * h * dq.y(),
@@ -153,7 +153,7 @@ Quat advanceQuat(const Quat& q, const Vec3& omega, float h) {
         .normalized();
 }
 
-MotionState stage(const MotionState& s, const MotionState& from, const Derivative& d, float h) {
+MotionState stage(const MotionState& s, const MotionState& from, const Derivative& d, Real h) {
     MotionState out;
     out.x = s.x + from.v * h;
     out.v = s.v + d.acceleration * h;
@@ -162,8 +162,8 @@ MotionState stage(const MotionState& s, const MotionState& from, const Derivativ
     return out;
 }
 
-void rungeKutta4(const Composite& c, MotionState& s, float dt) {
-    float h = 0.5f * dt;
+void rungeKutta4(const Composite& c, MotionState& s, Real dt) {
+    Real h = 0.5f * dt;
     Derivative k1 = evaluate(c, s, 0);
     MotionState s2 = stage(s, s, k1, h);
     Derivative k2 = evaluate(c, s2, h);
@@ -171,7 +171,7 @@ void rungeKutta4(const Composite& c, MotionState& s, float dt) {
     Derivative k3 = evaluate(c, s3, h);
     MotionState s4 = stage(s, s3, k3, dt);
     Derivative k4 = evaluate(c, s4, dt);
-    float w = dt / 6.0f;
+    Real w = dt / 6.0f;
     s.x += (s.v + 2.0f * s2.v + 2.0f * s3.v + s4.v) * w;
     s.v += (k1.acceleration + 2.0f * k2.acceleration + 2.0f * k3.acceleration + k4.acceleration) * w;
     s.L += (k1.torque + 2.0f * k2.torque + 2.0f * k3.torque + k4.torque) * w;
@@ -180,7 +180,7 @@ void rungeKutta4(const Composite& c, MotionState& s, float dt) {
     Quat sum(0, 0, 0, 0);
     const MotionState* states[] = {&s, &s2, &s3, &s4};
     const Derivative* ks[] = {&k1, &k2, &k3, &k4};
-    const float weights[] = {1, 2, 2, 1};
+    const Real weights[] = {1, 2, 2, 1};
     for (int i = 0; i < 4; ++i) {
         Quat dq = Quat(0.0f, ks[i]->omega.x(), ks[i]->omega.y(), ks[i]->omega.z()) * states[i]->q;
         sum.coeffs() += weights[i] * dq.coeffs();
@@ -196,7 +196,7 @@ void rungeKutta4(const Composite& c, MotionState& s, float dt) {
 
 } // namespace
 
-void integrate(Integrator which, const Composite& c, MotionState& s, float dt, const Vec3& kinematicOmega) {
+void integrate(Integrator which, const Composite& c, MotionState& s, Real dt, const Vec3& kinematicOmega) {
     if (c.kinematic) { // immovable by forces: constant velocities, exact for every integrator
         s.x += s.v * dt;
         s.q = rotateBy(s.q, kinematicOmega, dt);

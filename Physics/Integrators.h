@@ -17,12 +17,12 @@ struct Derivative {
 };
 
 // Forces of the trial state s at time t (s) into the step: gravity, constant forces, drag and generators.
-Derivative evaluate(const Composite& c, const MotionState& s, float t);
+Derivative evaluate(const Composite& c, const MotionState& s, Real t);
 
 // Advances s by dt. A kinematic composite moves with constant v and w (omega) whatever the integrator.
-void integrate(Integrator which, const Composite& c, MotionState& s, float dt, const Vec3& kinematicOmega);
+void integrate(Integrator which, const Composite& c, MotionState& s, Real dt, const Vec3& kinematicOmega);
 
 // q turned by the rotation vector w * dt (exact exponential map, renormalised).
-Quat rotateBy(const Quat& q, const Vec3& omega, float dt);
+Quat rotateBy(const Quat& q, const Vec3& omega, Real dt);
 
 } // namespace physics

@@ -404,20 +404,20 @@ void PhysicsScene::integrateComposite(RigidBody* body, float dt) {
         Quat q = d.orientation == body->writtenOrientation ? body->rotation : toQuat(d.orientation);
         // Angular velocity and momentum are one state: take the one the game changed (w wins if both); if
         // neither changed but the mass distribution did (attach, detach, new tensor), keep w.
+        // The body's own state (its Real values, or the fields the game wrote: RigidBody::OwnState).
         bool reshaped =
             !body->hasComposite || body->compositeMass != c.mass || body->compositeInertia != c.inertia;
+        Vec3 omega = body->stateOmega(), momentum = body->stateMomentum();
         if (d.angularVelocity != body->writtenOmega || c.kinematic)
-            d.angularMomentum = toVector(worldInertia(c, q) * toEigen(d.angularVelocity));
+            d.angularMomentum = toVector(momentum = worldInertia(c, q) * omega);
         else if (d.angularMomentum != body->writtenMomentum)
-            d.angularVelocity = toVector(worldInverseInertia(c, q) * toEigen(d.angularMomentum));
+            d.angularVelocity = toVector(omega = worldInverseInertia(c, q) * momentum);
         else if (reshaped)
-            d.angularMomentum = toVector(worldInertia(c, q) * toEigen(d.angularVelocity));
+            d.angularMomentum = toVector(momentum = worldInertia(c, q) * omega);
 
         // Root fields -> the composite's state about its centre of mass C, integrate, and back.
-        Vec3 omega = toEigen(d.angularVelocity);
         Vec3 arm = q * c.rootOffset; // root COM - C, world
-        MotionState s{toEigen(d.position) - arm, toEigen(d.velocity) - omega.cross(arm),
-                      toEigen(d.angularMomentum), q};
+        MotionState s{body->statePosition() - arm, body->stateVelocity() - omega.cross(arm), momentum, q};
         const Vec3 v0 = s.v;
         integrate(m_integrator, c, s, dt, omega);
         if (c.angularDrag > 0 && !c.kinematic) s.L *= std::exp(-c.angularDrag * dt); // exact decay, any value
@@ -430,13 +430,16 @@ void PhysicsScene::integrateComposite(RigidBody* body, float dt) {
                                    body->forceDw);
         } else {
             Vec3 arm1 = s.q * c.rootOffset;
-            d.position = toVector(s.x + arm1);
-            d.velocity = toVector(s.v + omega1.cross(arm1));
-            d.angularVelocity = toVector(omega1);
-            d.angularMomentum = c.kinematic ? toVector(worldInertia(c, s.q) * omega) : toVector(s.L);
+            body->writePosition(s.x + arm1);
+            body->writeVelocity(s.v + omega1.cross(arm1));
+            d.angularVelocity = toVector(omega = omega1);
+            momentum = c.kinematic ? Vec3(worldInertia(c, s.q) * omega) : s.L;
+            d.angularMomentum = toVector(momentum);
             if (!c.rotationLocked) d.orientation = toOrientation(s.q); // locked: the matrix is kept exactly
             body->rotation = s.q;
         }
+        body->own.omega = omega;
+        body->own.momentum = momentum;
         body->writtenOmega = d.angularVelocity;
         body->writtenMomentum = d.angularMomentum;
         body->writtenOrientation = d.orientation;

@@ -198,6 +198,11 @@ bool RigidBody::validate(const char* when) {
 void RigidBody::recordPreviousPose() {
     m_prevPosition = worldPosition();
     m_prevRotation = toQuat(worldOrientation());
+    // A root starts the step from its own Real pose (the same numbers in a float build, whose start
+    // rotation stays the float matrix's, as the determinism hashes were recorded with).
+    const bool root = !m_dyn.attachedTo();
+    m_startPosition = root ? statePosition() : toEigen(m_prevPosition);
+    if (GUARDIAN_REAL_IS_DOUBLE && root && m_dyn.orientation == writtenOrientation) m_prevRotation = rotation;
     projectedBy = Vector();
 }
 

@@ -145,6 +145,30 @@ public:
 
     // Angular bookkeeping of a root, written after each step: a differing field is a game edit.
     Vector writtenOmega, writtenMomentum;
+    // The engine's own state of a root between steps, in Real (MathBridge.h): COM position and velocity,
+    // angular velocity and momentum, authoritative while RBDynamics still holds what the scene last wrote of
+    // them (writtenPosition, writtenVelocity, writtenOmega, writtenMomentum); a field that differs is a game
+    // edit and is taken instead. In a float build each value is its field's own: nothing changes.
+    struct OwnState {
+        Vec3 position = Vec3::Zero(), velocity = Vec3::Zero(), omega = Vec3::Zero(), momentum = Vec3::Zero();
+        Vector writtenPosition, writtenVelocity;
+    };
+    OwnState own;
+    Vec3 statePosition() const { return ownOr(m_dyn.position, own.writtenPosition, own.position); }
+    Vec3 stateVelocity() const { return ownOr(m_dyn.velocity, own.writtenVelocity, own.velocity); }
+    Vec3 stateOmega() const { return ownOr(m_dyn.angularVelocity, writtenOmega, own.omega); }
+    Vec3 stateMomentum() const { return ownOr(m_dyn.angularMomentum, writtenMomentum, own.momentum); }
+    // Sets the state and writes it (rounded to float) into RBDynamics.
+    void writePosition(const Vec3& p) {
+        own.position = p;
+        m_dyn.position = own.writtenPosition = toVector(p);
+    }
+    void writeVelocity(const Vec3& v) {
+        own.velocity = v;
+        m_dyn.velocity = own.writtenVelocity = toVector(v);
+    }
+    // The start of this step: the root's own position (the world position of an attached body).
+    const Vec3& startPosition() const { return m_startPosition; }
     Matrix writtenOrientation = Matrix(1);
     Quat rotation = Quat::Identity(); // the exact quaternion behind writtenOrientation
     // What the integrator's forces did to the composite's velocities (about its centre of mass) this step:
@@ -154,7 +178,7 @@ public:
     bool hasComposite = false;
     // Its index among the contact solver's bodies while the solver moves it through this step (-1: not).
     int solverSlot = -1;
-    float compositeMass = 0;
+    Real compositeMass = 0;
     Mat3 compositeInertia = Mat3::Zero();
 
     // Everything of the body a step reads, for snapshots (SceneSnapshot.cpp): saved and put back whole.
@@ -166,7 +190,10 @@ public:
         Quat prevRotation, rotation;
         Matrix stepOrientation, writtenOrientation;
         Vec3 forceDv, forceDw;
-        float restTime, compositeMass;
+        OwnState own;
+        Vec3 startPosition;
+        float restTime;
+        Real compositeMass;
         unsigned sleepIsland;
         bool hasComposite;
         Mat3 compositeInertia;
@@ -202,6 +229,10 @@ private:
     mutable Matrix m_worldRot = Matrix(1);
     Vector m_prevPosition, m_stepPosition;
     Quat m_prevRotation = Quat::Identity();
+    Vec3 m_startPosition = Vec3::Zero();
+    static Vec3 ownOr(const Vector& field, const Vector& written, const Vec3& value) {
+        return field == written ? value : toEigen(field);
+    }
     Matrix m_stepOrientation = Matrix(1);
 };
 

@@ -38,10 +38,28 @@ public:
 } // namespace
 
 RigidBody::Saved RigidBody::save() const {
-    return Saved{m_dyn,          m_lastValid,       m_dyn.sleeping,     m_dyn.teleports, m_prevPosition,
-                 m_stepPosition, projectedBy,       writtenOmega,       writtenMomentum, m_prevRotation,
-                 rotation,       m_stepOrientation, writtenOrientation, forceDv,         forceDw,
-                 restTime,       compositeMass,     sleepIsland,        hasComposite,    compositeInertia};
+    return Saved{m_dyn,
+                 m_lastValid,
+                 m_dyn.sleeping,
+                 m_dyn.teleports,
+                 m_prevPosition,
+                 m_stepPosition,
+                 projectedBy,
+                 writtenOmega,
+                 writtenMomentum,
+                 m_prevRotation,
+                 rotation,
+                 m_stepOrientation,
+                 writtenOrientation,
+                 forceDv,
+                 forceDw,
+                 own,
+                 m_startPosition,
+                 restTime,
+                 compositeMass,
+                 sleepIsland,
+                 hasComposite,
+                 compositeInertia};
 }
 
 void RigidBody::load(const Saved& s) {
@@ -61,6 +79,8 @@ void RigidBody::load(const Saved& s) {
     writtenOrientation = s.writtenOrientation;
     forceDv = s.forceDv;
     forceDw = s.forceDw;
+    own = s.own;
+    m_startPosition = s.startPosition;
     restTime = s.restTime;
     compositeMass = s.compositeMass;
     sleepIsland = s.sleepIsland;

@@ -91,7 +91,7 @@ void ContactSolver::orderByLevel() {
     m_shock.resize(kept);
 }
 
-void ContactSolver::propagateShock(float h) {
+void ContactSolver::propagateShock(Real h) {
     for (const auto& [k, upperIsB] : m_shock) {
         Manifold& m = m_manifolds[k];
         SolverBody &a = m_bodies[size_t(m.a)], &b = m_bodies[size_t(m.b)];
@@ -103,15 +103,15 @@ void ContactSolver::propagateShock(float h) {
         for (int pass = 0; pass < 2; ++pass) // a box's corners: twice, like the normal passes
             for (int i = 0; i < m.count; ++i) {
                 ContactPoint& p = m.points[i];
-                const float gap = std::max(0.0f, separation(a, b, p));
-                const float vn = relativeSpeed<0>(a, b, p);
+                const Real gap = std::max(Real(0), separation(a, b, p));
+                const Real vn = relativeSpeed<0>(a, b, p);
                 if (vn >= -gap / h) continue;
                 const Vec3 arm = narrow(upperIsB ? p.armB[0] : p.armA[0]);
                 const Vec3 turn = narrow(upperIsB ? p.turnB[0] : p.turnA[0]);
-                const float k = upper.invMass + arm.dot(turn);
+                const Real k = upper.invMass + arm.dot(turn);
                 if (!(k > 0.0f)) continue;
-                const float impulse = (-gap / h - vn) / k; // raises v_n to -gap / h
-                const float sign = upperIsB ? 1.0f : -1.0f;
+                const Real impulse = (-gap / h - vn) / k; // raises v_n to -gap / h
+                const Real sign = upperIsB ? 1.0f : -1.0f;
                 upper.v += (sign * upper.invMass * impulse) * p.normal;
                 upper.w += (sign * impulse) * turn;
                 if (onWorld) p.normalImpulse += impulse;

@@ -4,8 +4,12 @@
 
 #include "ContactManifold.h"
 
-#if defined(__SSE2__)
+// The 4-wide SSE sum is for float rows; a double build (GUARDIAN_DOUBLE) takes the plain scalar sum.
+#if defined(__SSE2__) && !GUARDIAN_REAL_IS_DOUBLE
+#define GUARDIAN_SSE_ROWS 1
 #include <xmmintrin.h>
+#else
+#define GUARDIAN_SSE_ROWS 0
 #endif
 
 // The inner loops' helpers: asked to be inlined, for the manifold's velocities to stay in registers (the
@@ -31,13 +35,13 @@ template <int Row> const Vec3& direction(const ContactPoint& p) {
 
 // The relative velocity of b against a at the point, along a row's direction.
 template <int Row>
-inline float relativeSpeed(const SolverBody& a, const SolverBody& b, const ContactPoint& p) {
+inline Real relativeSpeed(const SolverBody& a, const SolverBody& b, const ContactPoint& p) {
     return direction<Row>(p).dot(b.v - a.v) + narrow(p.armB[Row]).dot(b.w) - narrow(p.armA[Row]).dot(a.w);
 }
 
 // An impulse along a row's direction: on b, and its opposite on a.
 template <int Row>
-inline void applyImpulse(SolverBody& a, SolverBody& b, const ContactPoint& p, float impulse) {
+inline void applyImpulse(SolverBody& a, SolverBody& b, const ContactPoint& p, Real impulse) {
     const Vec3& d = direction<Row>(p);
     a.v -= (a.invMass * impulse) * d;
     a.w -= impulse * narrow(p.turnA[Row]);
@@ -48,8 +52,8 @@ inline void applyImpulse(SolverBody& a, SolverBody& b, const ContactPoint& p, fl
 // (x0 + x1 + x2) + (y0 + y1 + y2) - (z0 + z1 + z2), each sum in the order Eigen's Vec3 dot adds (x0 + (x1 +
 // x2)), so that the 4-wide rows give the same bits as the Vec3 arithmetic the solver was tuned with: three
 // sums at once, lanes transposed.
-GUARDIAN_HOT float sumOfDots(const Vec4& x, const Vec4& y, const Vec4& z) {
-#if defined(__SSE2__)
+GUARDIAN_HOT Real sumOfDots(const Vec4& x, const Vec4& y, const Vec4& z) {
+#if GUARDIAN_SSE_ROWS
     __m128 r0 = _mm_loadu_ps(x.data()), r1 = _mm_loadu_ps(y.data()), r2 = _mm_loadu_ps(z.data()),
            r3 = _mm_setzero_ps();
     _MM_TRANSPOSE4_PS(r0, r1, r2, r3); // r_i = (x_i, y_i, z_i, 0)
@@ -67,7 +71,7 @@ GUARDIAN_HOT float sumOfDots(const Vec4& x, const Vec4& y, const Vec4& z) {
 // components shuffled in and out, a row took ~105 instructions in the awake pyramid's inner loop.)
 struct PairVelocity {
     Vec4 va, wa, vb, wb;
-    float ima, imb;
+    Real ima, imb;
     PairVelocity(const SolverBody& a, const SolverBody& b)
         : va(wide(a.v)), wa(wide(a.w)), vb(wide(b.v)), wb(wide(b.w)), ima(a.invMass), imb(b.invMass) {}
     void store(SolverBody& a, SolverBody& b) const {
@@ -76,11 +80,11 @@ struct PairVelocity {
         b.v = narrow(vb);
         b.w = narrow(wb);
     }
-    template <int Row> GUARDIAN_HOT float speed(const ContactPoint& p) const {
+    template <int Row> GUARDIAN_HOT Real speed(const ContactPoint& p) const {
         return sumOfDots(p.dir[Row].cwiseProduct(vb - va), p.armB[Row].cwiseProduct(wb),
                          p.armA[Row].cwiseProduct(wa));
     }
-    template <int Row> GUARDIAN_HOT void apply(const ContactPoint& p, float impulse) {
+    template <int Row> GUARDIAN_HOT void apply(const ContactPoint& p, Real impulse) {
         va -= (ima * impulse) * p.dir[Row];
         wa -= impulse * p.turnA[Row];
         vb += (imb * impulse) * p.dir[Row];
@@ -99,7 +103,7 @@ inline Vec3 worldPoint(const SolverBody& b, const Vec3& anchor) {
 }
 
 // The point's separation along its normal now (negative: overlap).
-inline float separation(const SolverBody& a, const SolverBody& b, const ContactPoint& p) {
+inline Real separation(const SolverBody& a, const SolverBody& b, const ContactPoint& p) {
     return p.normal.dot(worldPoint(b, p.anchorB) - worldPoint(a, p.anchorA));
 }
 

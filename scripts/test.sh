@@ -27,10 +27,11 @@ if [ "${1:-}" != "--quick" ]; then
   # Everything compiles warning-free with clang++ too (Debian 12: clang 14). The game and the integration
   # builds ran above and do not depend on the compiler's diagnostics: only the fast tests run again.
   # The testbed window and its screenshot test ran above too (with g++): not built again.
+  # The double-precision companion library and its tests ran above too (GUARDIAN_DOUBLE_COMPANION).
   run_suite "clang++ warnings-as-errors" build-clang "-LE integration|game" -- -DCMAKE_BUILD_TYPE=Release \
-    -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_UNITY_BUILD=ON -DGUARDIAN_BUILD_TESTBED=OFF
+    -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_UNITY_BUILD=ON -DGUARDIAN_BUILD_TESTBED=OFF -DGUARDIAN_DOUBLE_COMPANION=OFF
   # The package and install tests build projects of their own without sanitizers: they ran above. The
   # extremes suite's long runs (a 10^4-step soak: 41 s under ASan) and the testbed window ran above too.
   run_suite "sanitizers (ASan+UBSan)" build-asan "-LE integration|extremes" -- "${lines_only[@]}" \
-    -DGUARDIAN_SANITIZE=ON -DCMAKE_UNITY_BUILD=ON -DGUARDIAN_BUILD_TESTBED=OFF
+    -DGUARDIAN_SANITIZE=ON -DCMAKE_UNITY_BUILD=ON -DGUARDIAN_BUILD_TESTBED=OFF -DGUARDIAN_DOUBLE_COMPANION=OFF
 fi
