@@ -116,12 +116,13 @@ void SimpleCollisionSpace::deliverContactEvents() {
             ++i;
         }
     }
-    std::stable_sort(m_contactEvents.begin(), m_contactEvents.end(),
-                     [this](const ContactEvent& x, const ContactEvent& y) {
-                         if ((x.kind == 0) != (y.kind == 0)) return x.kind == 0;
-                         const auto& list = x.kind == 0 ? m_active : m_current;
-                         return list[x.index].order < list[y.index].order;
-                     });
+    // Ends first; within each list the orders are distinct (one pair per notice at most): a total order.
+    std::sort(m_contactEvents.begin(), m_contactEvents.end(),
+              [this](const ContactEvent& x, const ContactEvent& y) {
+                  if ((x.kind == 0) != (y.kind == 0)) return x.kind == 0;
+                  const auto& list = x.kind == 0 ? m_active : m_current;
+                  return list[x.index].order < list[y.index].order;
+              });
     m_observerSnapshot = m_observers;
     m_notifying = true;
     m_deliveringContacts = true;
