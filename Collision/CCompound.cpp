@@ -28,6 +28,7 @@ public:
         auto* c = new CCompound();
         c->m_children = m_children;
         c->bind(const_cast<CCompound*>(this)->body());
+        c->copyFilter(*this);
         c->joinDefaultSpace();
         return c;
     }

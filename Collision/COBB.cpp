@@ -20,6 +20,7 @@ public:
     iCollisionGeometry* clone() const override {
         auto* c = new COBB(m_half);
         c->bind(const_cast<COBB*>(this)->body());
+        c->copyFilter(*this);
         c->joinDefaultSpace();
         return c;
     }

@@ -30,6 +30,7 @@ public:
     iCollisionGeometry* clone() const override {
         auto* c = new CPlane(m_normal, m_offset);
         c->bind(const_cast<CPlane*>(this)->body());
+        c->copyFilter(*this);
         c->joinDefaultSpace();
         return c;
     }

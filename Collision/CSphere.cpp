@@ -15,6 +15,7 @@ public:
     iCollisionGeometry* clone() const override {
         auto* c = new CSphere(m_radius);
         c->bind(const_cast<CSphere*>(this)->body());
+        c->copyFilter(*this);
         c->joinDefaultSpace();
         return c;
     }

@@ -3,20 +3,23 @@
 //
 // CollisionGeometry::setGlobalCollisionSpace is the seed's way to choose the space new geometries join.
 // Spaces talk to a geometry through this class (worldShapes, the per-space bookkeeping); a geometry that
-// does not derive from it cannot be added to this package's spaces.
+// does not derive from it cannot be added to this package's spaces. It is also the geometry's collision
+// filter (layers, mask, sensor: iCollisionFilter.h).
 #pragma once
 
 #include "RBDynamics.h"
 #include "Shapes.h"
+#include "iCollisionFilter.h"
 #include "iCollisionGeometry.h"
 #include "iCollisionSpace.h"
 #include "iUserPointer.h"
 
+#include <cstdint>
 #include <vector>
 
 class iRigidBody;
 
-class CollisionGeometry {
+class CollisionGeometry : public iCollisionFilter {
 public:
     // Sets the space that geometries created from now on join (nullptr: none).
     static void setGlobalCollisionSpace(iCollisionSpace* cs) { setDefaultCollisionSpace(cs); }
@@ -35,6 +38,20 @@ public:
     // The solid this geometry is, for its body's inertia (RBDynamics::setShapeMass): volume 0 for none (a
     // plane, an empty compound).
     virtual ShapeMass shapeMass() const { return ShapeMass(); }
+
+    // iCollisionFilter: plain values, read by the space at its next populateContactList.
+    void setLayer(std::uint32_t layerBits) override { m_layer = layerBits; }
+    std::uint32_t getLayer() const override { return m_layer; }
+    void setMask(std::uint32_t maskBits) override { m_mask = maskBits; }
+    std::uint32_t getMask() const override { return m_mask; }
+    void setSensor(bool sensor) override { m_sensor = sensor; }
+    bool isSensor() const override { return m_sensor; }
+    // A clone filters as its original does.
+    void copyFilter(const CollisionGeometry& from) {
+        m_layer = from.m_layer;
+        m_mask = from.m_mask;
+        m_sensor = from.m_sensor;
+    }
 
     // The body pose this geometry is at now: false (pose left unset) when the body's dynamics are not
     // finite. A bodiless geometry is at the world origin.
@@ -84,6 +101,8 @@ private:
     iCollisionSpace* m_space = nullptr;
     SpaceState m_state;
     unsigned m_shapeVersion = 0;
+    std::uint32_t m_layer = 1, m_mask = ~std::uint32_t(0);
+    bool m_sensor = false;
     static void onBodyDestroyed(const iRigidBody* dying, void* self);
 };
 

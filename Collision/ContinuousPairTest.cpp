@@ -16,6 +16,8 @@
 //    with the contacts computed at that sample's poses. Below the cap, an overlap along the path deeper than
 //    about half a sample step is never missed; grazing overlaps shallower than that may be;
 //  * planes need none of this: everything behind a plane is solid, so the current pose catches it.
+// A pair the layer rule filters out is not tested; a pair with a sensor is tested at the current pose only,
+// for overlap (a notice for contact events, no contacts).
 // Only pairs where a geometry moved more than a quarter of its own smallest dimension, and the pair moved
 // more than a quarter of the smaller one's, go past the current-pose test (slower ones cannot pass through
 // each other). Cost: one exact test per candidate pair; a swept sphere about 70 point-distance
@@ -119,9 +121,38 @@ bool SimpleCollisionSpace::sweepSpheres(const Entry& a, const Entry& b) {
     return true;
 }
 
+// A sensor pair: overlap at the current pose, reported as a notice only (no contact for the solver, and
+// outside the contact budget, which counts contacts).
+void SimpleCollisionSpace::testSensorPair(const Entry& a, const Entry& b) {
+    gcol::ContactManifold m;
+    for (int i = a.first; i < a.last; ++i)
+        for (int j = b.first; j < b.last; ++j) {
+            if (gcol::collideShapes(m_shapes[size_t(i)], m_shapes[size_t(j)], m) == 0) continue;
+            Notice n;
+            n.g1 = a.g;
+            n.g2 = b.g;
+            n.b1 = a.body;
+            n.b2 = b.body;
+            n.normal = m.points[0].normal;
+            Vector sum;
+            for (int k = 0; k < m.count; ++k) sum += m.points[k].pos;
+            n.pos = sum / float(m.count);
+            n.points = m.count;
+            n.atPose = true;
+            n.sensor = true;
+            m_notices.push_back(n);
+            return; // one overlap is the answer
+        }
+}
+
 void SimpleCollisionSpace::testPair(const Entry& a, const Entry& b, float delta) {
     if (a.body && a.body == b.body) return;
+    if (!layersCollide(a.layer, a.mask, b.layer, b.mask)) return;
     if (a.fixed && b.fixed) return;
+    if (a.sensor || b.sensor) {
+        testSensorPair(a, b);
+        return;
+    }
     if (full()) { // the contact budget is spent: the pair is dropped untested
         ++m_droppedPairs;
         return;
@@ -164,5 +195,6 @@ void SimpleCollisionSpace::testPair(const Entry& a, const Entry& b, float delta)
     n.points = int(m_contacts.size() - before);
     n.pos = sum / float(n.points);
     n.atPose = touchingNow;
+    n.sensor = false;
     m_notices.push_back(n);
 }

@@ -15,9 +15,14 @@
 #include <cmath>
 
 SimpleCollisionSpace::SimpleCollisionSpace(size_t samplesPerSecond, std::unique_ptr<Broadphase> broadphase)
-    : m_samplesPerSecond(samplesPerSecond), m_broadphase(std::move(broadphase)) {}
+    : m_samplesPerSecond(samplesPerSecond), m_broadphase(std::move(broadphase)) {
+    watchRigidBodies(&SimpleCollisionSpace::onBodyDestroyed, this); // contact pairs name bodies
+}
 
-SimpleCollisionSpace::~SimpleCollisionSpace() = default;
+SimpleCollisionSpace::~SimpleCollisionSpace() {
+    unwatchRigidBodies(&SimpleCollisionSpace::onBodyDestroyed, this);
+    for (const ObserverSlot& s : m_observers) ContactObserverLinks::unlinked(s.observer, this);
+}
 
 bool SimpleCollisionSpace::add(iCollisionGeometry* o) {
     if (!o) {
@@ -134,6 +139,9 @@ bool SimpleCollisionSpace::gatherEntry(CollisionGeometry* g, bool continuous, En
     CollisionGeometry::SpaceState& st = g->spaceState();
     e.g = g;
     e.body = g->body();
+    e.layer = g->getLayer();
+    e.mask = g->getMask();
+    e.sensor = g->isSensor();
     e.plane = g->isPlane();
     if (!e.body && !e.plane) {
         st.hasPrevious = false;

@@ -8,11 +8,12 @@
 //  2. finds candidate pairs, the ones whose world AABBs (swept over the motion since the previous call when
 //     sampling is on) overlap, with its broadphase (sort-and-sweep or the tree); AABBs are conservative, so
 //     the pairs tested are a superset of the overlapping ones and the result equals plain all-pairs;
-//  3. skips pairs on the same body and pairs of two bodies that are each PHYS_FixedInSpace or sleeping
-//     (RBDynamics::sleeping; a bodiless plane is fixed);
+//  3. skips pairs on the same body, pairs the layer rule filters out (iCollisionFilter.h) and pairs of two
+//     bodies that are each PHYS_FixedInSpace or sleeping (RBDynamics::sleeping; a bodiless plane is fixed);
+//     a pair with a sensor is tested at the current pose for overlap only (no contacts);
 //  4. runs the exact pair test at the current pose, and when nothing touches and the pair moved fast,
 //     the continuous tests (ContinuousPairTest.cpp);
-//  5. notifies listeners (SpaceListeners.cpp).
+//  5. notifies listeners (SpaceListeners.cpp) and contact observers (SpaceContactEvents.cpp).
 // At most the contact budget's contacts are reported (iContactBudget.h): once it is full, the remaining
 // candidate pairs are dropped untested.
 // Storage is reused between calls: after warm-up a call does not allocate.
@@ -25,6 +26,7 @@
 #include "iCollisionSpace.h"
 #include "iCollisionSpaceScale.h"
 #include "iContactBudget.h"
+#include "iContactEvents.h"
 #include "iContactFeatures.h"
 #include "iDebugDrawable.h"
 #include "iShapeCast.h"
@@ -48,7 +50,8 @@ class SimpleCollisionSpace final : public iCollisionSpace,
                                    public iShapeCast,
                                    public iSnapshots,
                                    public iDebugDrawable,
-                                   public iCollisionSpaceScale {
+                                   public iCollisionSpaceScale,
+                                   public iContactEvents {
 public:
     SimpleCollisionSpace(size_t samplesPerSecond, std::unique_ptr<Broadphase> broadphase);
 
@@ -76,6 +79,9 @@ public:
     iSnapshot* takeSnapshot() const override;
     bool restoreSnapshot(const iSnapshot* s) override;
     void deliverEvents() override; // SpaceEvents.cpp
+    // SpaceContactEvents.cpp
+    bool addObserver(ContactObserver* observer) override;
+    bool removeObserver(ContactObserver* observer) override;
     bool setContactBudget(size_t maxContacts) override;
     size_t getContactBudget() const override { return m_budget; }
     size_t getDroppedPairCount() const override { return m_droppedPairs; }
@@ -105,11 +111,13 @@ public:
         unsigned teleports;       // RBDynamics::teleports of the body and its root
         Vector origin, prevOrigin;
         Matrix rotation, prevRotation;
-        float motion;    // upper bound on how far any point of it moved since the previous call
-        float rotAngle;  // rotation since the previous call (radians)
-        float minDim;    // smallest dimension of its shapes
-        int first, last; // its shapes in m_shapes
-        gcol::Aabb box;  // swept over the motion when moved
+        float motion;              // upper bound on how far any point of it moved since the previous call
+        float rotAngle;            // rotation since the previous call (radians)
+        float minDim;              // smallest dimension of its shapes
+        int first, last;           // its shapes in m_shapes
+        std::uint32_t layer, mask; // its collision filter (iCollisionFilter.h)
+        bool sensor;
+        gcol::Aabb box; // swept over the motion when moved
     };
     // One touching geometry pair, as listeners hear of it.
     struct Notice {
@@ -118,6 +126,7 @@ public:
         Vector normal, pos;
         int points;
         bool atPose; // touching at the poses of the call (not found along the motion before them)
+        bool sensor; // an overlap involving a sensor: no contacts, no HitWall, contact events only
     };
 
 private:
@@ -125,6 +134,7 @@ private:
     void removeNow(CollisionGeometry* g);
     bool gatherEntry(CollisionGeometry* g, bool continuous, Entry& e);
     void testPair(const Entry& a, const Entry& b, float delta);
+    void testSensorPair(const Entry& a, const Entry& b);
     bool testAtPoses(const Entry& a, const Entry& b, float t, unsigned tag);
     bool sweepSpheres(const Entry& a, const Entry& b);
     void emit(const Entry& a, const Entry& b, const gcol::ContactManifold& m, unsigned childPair,
@@ -136,6 +146,11 @@ private:
     void reportTouching();
     void forgetEventsOf(const CollisionGeometry* g);
     void finishNotifications();
+    // SpaceContactEvents.cpp: the pairs touching in notices, then begin/persist/end against the last ones.
+    void gatherContactPairs(const std::vector<Notice>& notices);
+    void deliverContactEvents();
+    void forgetContactPairsOf(const CollisionGeometry* g);
+    static void onBodyDestroyed(const iRigidBody* dying, void* self);
     bool queryShapes(iCollisionGeometry* ig, std::vector<gcol::WorldShape>& out);
     // SpaceShapeCast.cpp
     struct CastGeometry {
@@ -204,8 +219,32 @@ private:
     unsigned long long m_call = 0; // populateContactList calls, to tell this call's entries
     std::vector<iCollisionListener*> m_listenerSnapshot;
     std::vector<CollisionGeometry*> m_pendingRemove, m_pendingDelete;
+    // Contact events (SpaceContactEvents.cpp): kept only while an observer is attached.
+    struct ObserverSlot {
+        ContactObserver* observer;
+        bool fresh; // attached since the last delivery: hears onBegin for every pair touching
+    };
+    std::vector<ObserverSlot> m_observers, m_observerSnapshot;
+    struct ActivePair {
+        std::uintptr_t lo, hi; // the sides (body, or bodiless geometry) by address, lower first
+        bool sensor;
+        bool gone;                  // a side went: it can no longer match (its address may be reused)
+        bool announced;             // observers heard its onBegin (only those hear its onEnd)
+        size_t order;               // place in the list it was found in (delivery order)
+        ContactPair pair;           // as observers hear it
+        CollisionGeometry *gA, *gB; // our records of pair.geometryA/B
+    };
+    std::vector<ActivePair> m_active, m_current; // sorted by sides: at the last delivery; at this one
+    struct ContactEvent {
+        int kind;     // 0 end (m_active), 1 begin, 2 persist (m_current)
+        size_t index; // in that list
+    };
+    std::vector<ContactEvent> m_contactEvents; // scratch
+    bool m_gathered = false;                   // m_current holds this delivery's pairs
+    bool m_deliveringContacts = false;         // m_active and m_current are being iterated
     // Shape cast scratch.
     std::vector<CastGeometry> m_cast;
+    std::vector<const CollisionGeometry*> m_movingOwner;   // the geometry of each m_moving shape
     std::vector<std::pair<const void*, int>> m_sweepIndex; // (root dynamics, sweep), sorted
     std::vector<int> m_castOrder;                          // m_cast indices grouped by sweep
     std::vector<std::pair<int, int>> m_sweepRange;         // each sweep's range in m_castOrder

@@ -3,7 +3,8 @@
 // A pair is touching when this call's test found contact, or when it was not tested because both bodies
 // rest (fixed or asleep, and not moved) and it touched when last tested: sleeping hides no contact. Listeners
 // hear of the touching pairs at the end of each populateContactList, or, with events held (a physics scene
-// stepping several times a frame), once per body pair in deliverEvents.
+// stepping several times a frame), once per body pair in deliverEvents; contact observers at the same
+// moments, after the listeners (SpaceContactEvents.cpp).
 #include "SimpleCollisionSpace.h"
 #include "iUtilities.h"
 
@@ -55,7 +56,9 @@ void SimpleCollisionSpace::reportTouching() {
     m_touching = m_notices;
     if (!m_holdEvents) {
         if (m_heldCalls > 0) m_heldCalls = 2; // what is held is no longer what touches now: deliver both
+        if (!m_observers.empty()) gatherContactPairs(m_notices);
         notifyListeners(m_notices);
+        deliverContactEvents();
         return;
     }
     ++m_heldCalls;
@@ -76,11 +79,14 @@ void SimpleCollisionSpace::deliverEvents() {
     if (m_heldCalls > 1) m_delivery.insert(m_delivery.end(), m_held.begin(), m_held.end());
     m_held.clear();
     m_heldCalls = 0;
+    if (!m_observers.empty()) gatherContactPairs(m_delivery);
     notifyListeners(m_delivery);
+    deliverContactEvents();
 }
 
 void SimpleCollisionSpace::forgetEventsOf(const CollisionGeometry* g) {
     auto involves = [g](const Notice& n) { return n.g1 == g || n.g2 == g; };
     m_touching.erase(std::remove_if(m_touching.begin(), m_touching.end(), involves), m_touching.end());
     m_held.erase(std::remove_if(m_held.begin(), m_held.end(), involves), m_held.end());
+    forgetContactPairsOf(g);
 }

@@ -24,11 +24,12 @@ bool stillBound(CollisionGeometry* g, iRigidBody* b) {
 } // namespace
 
 void SimpleCollisionSpace::notifyListeners(std::vector<Notice>& notices) {
-    // One notice per body pair, the first one listed.
+    // One notice per body pair, the first one listed. Sensor overlaps are not HitWalls (contact events only).
     // Sorted by (body pair, place in the list): the keys are computed once (this sort ran 12 % of an awake
     // pyramid's frame when each comparison computed them).
     m_bodyPairs.clear();
     for (size_t i = 0; i < notices.size(); ++i) {
+        if (notices[i].sensor) continue;
         const auto x = reinterpret_cast<std::uintptr_t>(notices[i].b1);
         const auto y = reinterpret_cast<std::uintptr_t>(notices[i].b2);
         m_bodyPairs.push_back({std::min(x, y), std::max(x, y), i});
@@ -43,7 +44,7 @@ void SimpleCollisionSpace::notifyListeners(std::vector<Notice>& notices) {
     }
     m_notifying = true;
     for (const Notice& n : notices) {
-        if (n.points == 0) continue;
+        if (n.points == 0 || n.sensor) continue;
         for (int side = 0; side < 2; ++side) {
             iRigidBody* self = side == 0 ? n.b1 : n.b2;
             iRigidBody* other = side == 0 ? n.b2 : n.b1;

@@ -79,7 +79,7 @@ size_t SimpleCollisionSpace::sweepBodies(BodySweep* sweeps, size_t count) {
     // The pairs the last populateContactList found touching at their poses: the contact solve has them.
     m_touchedAtStart.clear();
     for (const Notice& n : m_touching)
-        if (n.atPose) m_touchedAtStart.push_back(pairOf(n.g1, n.g2));
+        if (n.atPose && !n.sensor) m_touchedAtStart.push_back(pairOf(n.g1, n.g2));
     std::sort(m_touchedAtStart.begin(), m_touchedAtStart.end());
     // Every geometry that takes part and which sweep (if any) moves it. Poses are read now only for the
     // swept ones; an obstacle's only when some body turns out fast (most steps: none).
@@ -144,12 +144,15 @@ size_t SimpleCollisionSpace::sweepBodies(BodySweep* sweeps, size_t count) {
 
 void SimpleCollisionSpace::castShapesAt(int sweep, const Vector& position, const Matrix& rotation) {
     const Mat3 r = gmath::block3(rotation).transpose();
+    m_moving.clear();
+    m_movingOwner.clear();
     for (int j = m_sweepRange[size_t(sweep)].first; j < m_sweepRange[size_t(sweep)].second; ++j) {
         const CastGeometry& c = m_cast[size_t(m_castOrder[size_t(j)])];
-        if (c.g->isPlane()) continue;
+        if (c.g->isPlane() || c.g->isSensor()) continue; // a sensor stops nothing
         Vector origin = vec(eigen(position) + r * eigen(c.localOrigin));
         Matrix rot = gmath::fromBlock3((r * gmath::block3(c.localRotation).transpose()).transpose());
         c.g->worldShapes(origin, rot, m_moving);
+        m_movingOwner.resize(m_moving.size(), c.g);
     }
 }
 
@@ -253,7 +256,8 @@ void SimpleCollisionSpace::sweepOne(BodySweep& sweep, int index) {
         // A pair found touching when the contacts were found is the contact solve's: the straight-line path
         // (COM linear, orientation slerp) of a body turning about a touch cuts into the surface, and a domino
         // leaning on the next one was put back every step.
-        if (c.sweep == index || c.sweep == kUnusable || touchedAtStart(range, c.g)) continue;
+        if (c.sweep == index || c.sweep == kUnusable || c.g->isSensor() || touchedAtStart(range, c.g))
+            continue;
         const Vector& shift = c.shift;
         const Vec3 half = 0.5f * eigen(shift);
         if (!c.g->isPlane()) { // its bounding sphere against the swept bounds first: most are far
@@ -282,6 +286,13 @@ void SimpleCollisionSpace::sweepOne(BodySweep& sweep, int index) {
     castShapesAt(index, sweep.startPosition, sweep.startOrientation);
     const size_t nm = m_moving.size(), no = m_obstacles.size();
     m_ignored.assign(nm * no, 0);
+    // Pairs the layer rule filters out never touch (a bullet leaving its shooter).
+    for (size_t i = 0; i < nm; ++i)
+        for (size_t j = 0; j < no; ++j) {
+            const CollisionGeometry *a = m_movingOwner[i], *b = m_cast[size_t(m_obstacleOwner[j])].g;
+            if (!layersCollide(a->getLayer(), a->getMask(), b->getLayer(), b->getMask()))
+                m_ignored[i * no + j] = 1;
+        }
     const float turn = angle * reach; // how far turning can carry any point over the whole motion
     float t = 0.0f, gap = 0.0f;
     int hit = -1;

@@ -4,7 +4,8 @@
 // overlapping pair, none twice, none false. Reusable: pass any space factory.
 // checkAgainstReference runs a space beside a reference space (the simple one) over many calls on twin
 // geometries of the same bodies, with moves, teleports, sleeping, fixing, adds and removes between calls:
-// each call's contacts (per pair, in order, bit for bit) and ray and overlap queries must be the same.
+// each call's contacts (per pair, in order, bit for bit) and ray and overlap queries must be the same; with
+// filters, twins get the same random layer, mask and sensor flag, changed now and then between calls.
 #pragma once
 
 #include "DefaultSpace.h"
@@ -14,6 +15,7 @@
 #include "iCOBB.h"
 #include "iCPlane.h"
 #include "iCSphere.h"
+#include "iCollisionFilter.h"
 #include "iCollisionQueries.h"
 #include "iCollisionSpace.h"
 #include "iContactFeatures.h"
@@ -21,6 +23,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cstdint>
 #include <functional>
 #include <map>
 #include <memory>
@@ -205,7 +208,7 @@ inline std::vector<int> slotsOf(const std::vector<iCollisionGeometry*>& found,
 
 inline void checkAgainstReference(const std::function<iCollisionSpace*()>& makeSpace,
                                   const std::function<iCollisionSpace*()>& makeReference, Scene scene,
-                                  unsigned seed, int count, int calls) {
+                                  unsigned seed, int count, int calls, bool filters = false) {
     std::mt19937 gen(seed);
     auto uni = [&](float a, float b) { return std::uniform_real_distribution<float>(a, b)(gen); };
     auto pick = [&](int n) { return std::uniform_int_distribution<int>(0, n - 1)(gen); };
@@ -232,6 +235,8 @@ inline void checkAgainstReference(const std::function<iCollisionSpace*()>& makeS
             h(size, uni(0.2f, 1.0f) * size, uni(0.2f, 1.0f) * size);
         float offset = uni(-extent, 0);
         bool planeBody = pick(2) != 0;
+        const std::uint32_t layer = filters ? 1u << pick(4) : 1u, mask = filters ? unsigned(pick(16)) : ~0u;
+        const bool sensor = filters && pick(6) == 0;
         for (int twin = 0; twin < 2; ++twin) {
             iCollisionGeometry* g;
             if (kind == 0)
@@ -240,6 +245,9 @@ inline void checkAgainstReference(const std::function<iCollisionSpace*()>& makeS
                 g = CreateCSphere(body, size);
             else
                 g = CreateCOBB(body, h);
+            filterOf(g)->setLayer(layer);
+            filterOf(g)->setMask(mask);
+            filterOf(g)->setSensor(sensor);
             (twin ? reference : tested)->add(g);
             (twin ? twins.reference : twins.tested).push_back(g);
         }
@@ -299,7 +307,18 @@ inline void checkAgainstReference(const std::function<iCollisionSpace*()>& makeS
                 }
         if (what == 6)
             for (int k = 0; k < 1 + pick(count / 10 + 1); ++k) addGeometry();
-        // what == 7: nothing changes (the persistent pairs stand as they are).
+        // what == 7: nothing changes (the persistent pairs stand as they are); or, with filters, some
+        // filters.
+        if (what == 7 && filters)
+            for (size_t i = 0; i < twins.tested.size(); ++i)
+                if (twins.tested[i] && pick(10) == 0) {
+                    const std::uint32_t mask = unsigned(pick(16));
+                    const bool sensor = pick(6) == 0;
+                    for (iCollisionGeometry* g : {twins.tested[i], twins.reference[i]}) {
+                        filterOf(g)->setMask(mask);
+                        filterOf(g)->setSensor(sensor);
+                    }
+                }
         compareQueries(call);
         tested->populateContactList(1.0f / 60.0f);
         reference->populateContactList(1.0f / 60.0f);
