@@ -77,6 +77,11 @@ public:
     void setSpace(iCollisionSpace* s) { m_space = s; }
     iCollisionSpace* space() const { return m_space; }
     iRigidBody* body() const { return m_body; }
+    // Still bound to b and staying in its space: a listener or observer called before may have removed,
+    // deleted or rebound it.
+    bool stillBoundTo(const iRigidBody* b) const {
+        return m_body == b && !m_state.pendingDelete && !m_state.pendingRemove;
+    }
     // Changes whenever the geometry's shapes change (a radius, a child): a pose and this version tell its
     // bounds.
     unsigned shapeVersion() const { return m_shapeVersion; }

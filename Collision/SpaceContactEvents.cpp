@@ -17,11 +17,6 @@
 
 namespace {
 
-bool stillBound(CollisionGeometry* g, iRigidBody* b) {
-    const CollisionGeometry::SpaceState& st = g->spaceState();
-    return g->body() == b && !st.pendingDelete && !st.pendingRemove;
-}
-
 // A side of a pair: its body, or a geometry that has none (a plane).
 std::uintptr_t sideOf(const CollisionGeometry* g, const iRigidBody* b) {
     return b ? reinterpret_cast<std::uintptr_t>(b) : reinterpret_cast<std::uintptr_t>(g);
@@ -61,7 +56,7 @@ void SimpleCollisionSpace::gatherContactPairs(const std::vector<Notice>& notices
     m_current.clear();
     for (size_t i = 0; i < notices.size(); ++i) {
         const Notice& n = notices[i];
-        if (!stillBound(n.g1, n.b1) || !stillBound(n.g2, n.b2)) continue; // a body died or was rebound
+        if (!n.g1->stillBoundTo(n.b1) || !n.g2->stillBoundTo(n.b2)) continue; // a body died or was rebound
         const std::uintptr_t a = sideOf(n.g1, n.b1), b = sideOf(n.g2, n.b2);
         ActivePair p;
         p.lo = std::min(a, b);

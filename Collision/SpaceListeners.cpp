@@ -14,15 +14,6 @@
 #include <algorithm>
 #include <cstdint>
 
-namespace {
-
-bool stillBound(CollisionGeometry* g, iRigidBody* b) {
-    const CollisionGeometry::SpaceState& st = g->spaceState();
-    return g->body() == b && !st.pendingDelete && !st.pendingRemove;
-}
-
-} // namespace
-
 void SimpleCollisionSpace::notifyListeners(std::vector<Notice>& notices) {
     // One notice per body pair, the first one listed. Sensor overlaps are not HitWalls (contact events only).
     // Sorted by (body pair, place in the list): the keys are computed once (this sort ran 12 % of an awake
@@ -53,11 +44,11 @@ void SimpleCollisionSpace::notifyListeners(std::vector<Notice>& notices) {
             Vector normal = side == 0 ? n.normal : -n.normal;
             // Bound-ness first: it compares pointers only, and a body deleted by an earlier call must not be
             // touched.
-            if (!self || !stillBound(selfGeom, self) || !stillBound(otherGeom, other)) continue;
+            if (!self || !selfGeom->stillBoundTo(self) || !otherGeom->stillBoundTo(other)) continue;
             if (self->getListeners().empty()) continue; // nobody to tell
             m_listenerSnapshot = self->getListeners();
             for (iCollisionListener* l : m_listenerSnapshot) {
-                if (!stillBound(selfGeom, self) || !stillBound(otherGeom, other)) break;
+                if (!selfGeom->stillBoundTo(self) || !otherGeom->stillBoundTo(other)) break;
                 const std::vector<iCollisionListener*>& now = self->getListeners();
                 if (std::find(now.begin(), now.end(), l) == now.end()) continue;
                 l->HitWall(other, normal, n.pos);

@@ -71,8 +71,10 @@ struct RBDynamics {
     // not change its motion, but it still moves and turns with the velocity and angular velocity you give it
     // (a composite with an infinite part turns about its root's centre of mass).
     float mass = 1.0f;
-    // Quadratic drag F = -1/2 rho Cd A |v| v through the COM, with air density rho = 1.2 kg/m^3 and reference
-    // area A = 1 m^2 (fold a body's real area into Cd). Terminal speed: sqrt(2 m g / (rho Cd A)). >= 0.
+    // Quadratic drag F = -1/2 rho Cd A |v| v through the COM, with air density rho = 1.2 kg/m^3 and the
+    // reference area A = pi r^2 of the sphere with the body's volume (its collision geometry's solid; a body
+    // with none is the sphere of radius 1 its inertia assumes: A = pi), so drag follows the body's size and
+    // this is a true Cd (a sphere's 0.47). Terminal speed: sqrt(2 m g / (rho Cd A)). >= 0.
     float dragCoefficient = 0.0f;
     // Angular drag (1/s): the spin's angular momentum decays as e^(-angularDrag t), a torque -angularDrag L
     // taken exactly over each step (stable at any value). 0: none; >= 0. On an attachment chain the root's

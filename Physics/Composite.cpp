@@ -4,13 +4,23 @@
 #include "MathEigen.h"
 #include "RigidBody.h"
 
+#include <cmath>
+
 namespace physics {
 
 namespace {
-// Air density of the drag law (RBDynamics.h, 1.2 kg/m^3) times the reference area (1 m^2), halved. In a
-// world of L length units per metre, rho is 1.2 / L^3 kg/unit^3 and A is L^2 unit^2: their product is this
-// over L, so that a body falls through the air alike at every scale.
-constexpr float HALF_RHO_AREA = 0.5f * 1.2f * 1.0f;
+// Air density of the drag law (RBDynamics.h), 1.2 kg/m^3: in a world of L length units per metre it is
+// 1.2 / L^3 kg/unit^3, so that a body falls through the air alike at every scale.
+constexpr float AIR_DENSITY = 1.2f;
+
+// The drag law's reference area: the cross-section pi r^2 of the sphere with the body's volume (the solid of
+// its collision geometry; a body with none is the sphere of radius 1 its inertia assumes), so that drag
+// follows the body's size and dragCoefficient is a true Cd (the seed: 0.25-0.45 a car).
+float dragArea(const RBDynamics& d) {
+    const float volume = d.getShapeMass().volume;
+    const float r = volume > 0.0f ? std::cbrt(volume * (3.0f / (4.0f * 3.14159265f))) : 1.0f;
+    return 3.14159265f * r * r;
+}
 
 struct Placed {
     RBDynamics* dyn;
@@ -96,9 +106,11 @@ void buildComposite(RigidBody* rootBody, const std::unordered_map<const RBDynami
         locked = locked || (body && body->isRotationLocked());
         Vec3 force = toEigen(d.force + d.temporalForce);
         if (d.mass < INFINITE_MASS) force += d.mass * toEigen(d.acceleration);
-        out.parts.push_back({body, p.dyn, p.position - centre, p.rotation, force,
-                             toEigen(d.torque + d.temporalTorque),
-                             drag ? HALF_RHO_AREA * d.dragCoefficient / lengthUnit : 0.0f});
+        out.parts.push_back(
+            {body, p.dyn, p.position - centre, p.rotation, force, toEigen(d.torque + d.temporalTorque),
+             drag && d.dragCoefficient > 0.0f ? 0.5f * AIR_DENSITY / (lengthUnit * lengthUnit * lengthUnit) *
+                                                    dragArea(d) * d.dragCoefficient
+                                              : 0.0f});
     }
     if (locked) out.inertia = out.invInertia = Mat3::Zero(); // as a zero inverse tensor: never turns
     out.rotationLocked = out.invInertia.isZero(0.0f);

@@ -54,16 +54,17 @@ private:
     Vector m_v0 = Vector(3, 8, 1);
 };
 
-// Dropped from rest with the drag coefficient of the knobs (m = 1 kg); error: the largest |fallen -
-// vt^2 / g ln cosh(g t / vt)| (m).
+// Dropped from rest with the drag coefficient of the knobs (m = 1 kg, a sphere of 1 m^2 cross-section);
+// error: the largest |fallen - vt^2 / g ln cosh(g t / vt)| (m).
 class DragFall final : public TrialScene {
 public:
+    static constexpr double kRadius = 0.5641896; // pi r^2 = 1 m^2
     void build(World& w, const Knobs&) override {
-        for (int i = 0; i < kAnalyticCopies; ++i) w.sphere(start(i), 0.1f, 1.0f);
+        for (int i = 0; i < kAnalyticCopies; ++i) w.sphere(start(i), float(kRadius), 1.0f);
     }
     double error(World& w, const Knobs& k, double t, double) override {
         const double g = -settingsOf(w.scene())->getGravity().y;
-        const double truth = dragFallDistance(1.0, k.drag, g, t);
+        const double truth = dragFallDistance(1.0, k.drag, kPi * kRadius * kRadius, g, t);
         double worst = 0;
         for (iPhysicsFrame* f : w.bodies())
             worst = std::max(worst, std::abs(-f->getDynamics()->position.y - truth));

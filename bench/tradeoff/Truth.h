@@ -25,11 +25,12 @@ inline Vec3d projectileAt(const Vec3d& x0, const Vec3d& v0, const Vec3d& g, doub
 }
 
 // A body dropped from rest under gravity g (> 0, downward) and quadratic drag F = 1/2 rho Cd A v^2
-// (rho = 1.2 kg/m^3, A = 1 m^2, as RBDynamics documents): how far it has fallen after t seconds,
-// vt^2 / g ln cosh(g t / vt) with the terminal speed vt = sqrt(2 m g / (rho Cd A)). Cd = 0: g t^2 / 2.
-inline double dragFallDistance(double mass, double cd, double g, double t) {
+// (rho = 1.2 kg/m^3; A the cross-section of the sphere with the body's volume, as RBDynamics documents): how
+// far it has fallen after t seconds, vt^2 / g ln cosh(g t / vt) with the terminal speed
+// vt = sqrt(2 m g / (rho Cd A)). Cd = 0: g t^2 / 2.
+inline double dragFallDistance(double mass, double cd, double area, double g, double t) {
     if (cd <= 0) return 0.5 * g * t * t;
-    const double vt = std::sqrt(2.0 * mass * g / (1.2 * cd * 1.0));
+    const double vt = std::sqrt(2.0 * mass * g / (1.2 * cd * area));
     return vt * vt / g * std::log(std::cosh(g * t / vt));
 }
 

@@ -60,7 +60,8 @@ TEST(IntegratorAccuracy, EulerErrorsAreFirstOrderInTheStep) {
     }
 }
 
-// Quadratic drag F = -1/2 rho Cd A |v| v (rho 1.2, A 1): falling from rest the speed tends to
+// Quadratic drag F = -1/2 rho Cd A |v| v (rho 1.2; A = pi, a body without geometry being the unit sphere its
+// inertia assumes): falling from rest the speed tends to
 // sqrt(2 m g / (rho Cd A)), reached to 1e-12 after 6 s (the time constant v_t / g is 0.45 s). Each
 // integrator's fixed point of dv/dt = 0 is the exact terminal speed, so 0.5% is a loose, honest bound.
 TEST(IntegratorAccuracy, QuadraticDragReachesTheAnalyticTerminalVelocity) {
@@ -71,7 +72,7 @@ TEST(IntegratorAccuracy, QuadraticDragReachesTheAnalyticTerminalVelocity) {
         b->getDynamics().mass = 2.0f;
         b->getDynamics().dragCoefficient = 0.8f;
         h.run(6000);
-        float terminal = std::sqrt(2.0f * 2.0f * 9.81f / (1.2f * 0.8f * 1.0f));
+        float terminal = std::sqrt(2.0f * 2.0f * 9.81f / (1.2f * 0.8f * 3.14159265f));
         EXPECT_NEAR(-b->getDynamics().velocity.y, terminal, 0.005f * terminal) << "integrator " << i;
     }
 }

@@ -129,18 +129,18 @@ TEST(Switches, GravityOffKeepsVelocityExactlyAndAScaleScalesIt) {
     b->Delete();
 }
 
-// Drag off: a body whose drag would hold it near its terminal speed sqrt(2 m g / (rho Cd)) = 4.04 m/s falls
-// as a projectile, v = g t.
+// Drag off: a body whose drag would hold it near its terminal speed sqrt(2 m g / (rho Cd A)) = 2.28 m/s (A =
+// pi: no geometry, the unit sphere) falls as a projectile, v = g t.
 TEST(Switches, DragOffFallsAsAProjectile) {
     for (bool drag : {true, false}) {
         SceneFixture f;
         iPhysicsFrame* body = CreatePhysicsFrame();
-        body->getDynamics()->dragCoefficient = 1.0f; // 1 kg: terminal speed 4.04 m/s
+        body->getDynamics()->dragCoefficient = 1.0f; // 1 kg: terminal speed 2.28 m/s
         switchesOf(f.scene)->setFeatureEnabled(FEATURE_Drag, drag);
         f.seconds(2.0f);
         const float fall = -body->getDynamics()->velocity.y;
         if (drag)
-            EXPECT_LT(fall, std::sqrt(2.0f * kG / 1.2f) * 1.001f);
+            EXPECT_LT(fall, std::sqrt(2.0f * kG / (1.2f * 3.14159265f)) * 1.001f);
         else
             EXPECT_NEAR(fall, kG * 2.0f, 1e-3f);
         body->Delete();

@@ -199,3 +199,30 @@ TEST(WorldScale, TheUnitIsRefusedOutOfRangeAndForwardedToTheSpace) {
     EXPECT_EQ(scaleOf(octree)->getLengthUnitsPerMetre(), 0.001f);
     octree->Delete();
 }
+
+// Drag follows the body's size: spheres of radius 0.1, 1 and 10 m (Cd 0.47, mass chosen for a terminal speed
+// near 10 m/s) dropped from rest fall through the air as m v' = m g - 1/2 rho Cd (pi r^2) v^2 says, reaching
+// vt = sqrt(2 m g / (rho Cd pi r^2)) within 1 %; the same at 100 units per metre (every length times 100,
+// gravity -981). A box's reference area is that of the sphere with its volume.
+TEST(WorldScale, DragFollowsTheBodysSize) {
+    const float cd = 0.47f, vt = 10.0f;
+    for (float s : {1.0f, 100.0f})
+        for (float r : {0.1f, 1.0f, 10.0f}) {
+            SceneFixture f(4);
+            ASSERT_TRUE(settingsOf(f.scene)->setLengthUnitsPerMetre(s));
+            settingsOf(f.scene)->setGravity(Vector(0, -kG * s, 0));
+            const float area = 3.14159265f * r * r; // m^2
+            const float mass = 0.5f * 1.2f * cd * area * vt * vt / kG;
+            RBDynamics* d = f.world->sphere(Vector(0, 0, 0), r * s, mass)->getDynamics();
+            d->dragCoefficient = cd;
+            f.seconds(6.0f); // 6 time constants vt / g
+            EXPECT_NEAR(-d->velocity.y / s, vt, 0.01f * vt) << "r " << r << " m at " << s << " units/m";
+        }
+    SceneFixture f(4);
+    const float h = 0.5f, cube = 8 * h * h * h, r = std::cbrt(cube * 3.0f / (4.0f * 3.14159265f));
+    const float mass = 0.5f * 1.2f * cd * 3.14159265f * r * r * vt * vt / kG;
+    RBDynamics* box = f.world->box(Vector(0, 0, 0), Vector(h, h, h), mass)->getDynamics();
+    box->dragCoefficient = cd;
+    f.seconds(6.0f);
+    EXPECT_NEAR(-box->velocity.y, vt, 0.01f * vt);
+}

@@ -36,14 +36,15 @@ TEST(TradeoffTruth, ProjectileIsX0PlusV0TPlusHalfGTSquared) {
 }
 
 TEST(TradeoffTruth, DragFallMatchesNumericalIntegration) {
-    // m v' = m g - 1/2 rho Cd A v^2 (falling: v > 0 downward), rho = 1.2, A = 1.
-    for (double cd : {0.1, 0.5, 2.0}) {
-        double x = 0, v = 0;
-        integrate(x, v, 2.0, 1e-4,
-                  [cd](double, double vel) { return 9.81 - 0.5 * 1.2 * cd * vel * vel / 1.0; });
-        EXPECT_NEAR(dragFallDistance(1.0, cd, 9.81, 2.0), x, 1e-9) << "Cd " << cd;
-    }
-    EXPECT_NEAR(dragFallDistance(1.0, 0.0, 9.81, 2.0), 19.62, 1e-12); // no drag: g t^2 / 2
+    // m v' = m g - 1/2 rho Cd A v^2 (falling: v > 0 downward), rho = 1.2.
+    for (double area : {1.0, 0.25})
+        for (double cd : {0.1, 0.5, 2.0}) {
+            double x = 0, v = 0;
+            integrate(x, v, 2.0, 1e-4,
+                      [cd, area](double, double vel) { return 9.81 - 0.5 * 1.2 * cd * area * vel * vel; });
+            EXPECT_NEAR(dragFallDistance(1.0, cd, area, 9.81, 2.0), x, 1e-9) << "Cd " << cd << " A " << area;
+        }
+    EXPECT_NEAR(dragFallDistance(1.0, 0.0, 1.0, 9.81, 2.0), 19.62, 1e-12); // no drag: g t^2 / 2
 }
 
 TEST(TradeoffTruth, OrbitIsCircularUnderItsInverseSquareField) {
