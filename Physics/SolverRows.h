@@ -74,11 +74,18 @@ struct PairVelocity {
     Real ima, imb;
     PairVelocity(const SolverBody& a, const SolverBody& b)
         : va(wide(a.v)), wa(wide(a.w)), vb(wide(b.v)), wb(wide(b.w)), ima(a.invMass), imb(b.invMass) {}
+    // An immovable body (the static world, fixed, kinematic) is never written: what it gained was 0 x
+    // impulse, which is its own velocity again, except when an impulse is not finite (a NaN the game wrote
+    // with validation switched off), which would pass through it to everything else on the same ground.
     void store(SolverBody& a, SolverBody& b) const {
-        a.v = narrow(va);
-        a.w = narrow(wa);
-        b.v = narrow(vb);
-        b.w = narrow(wb);
+        if (ima > 0) {
+            a.v = narrow(va);
+            a.w = narrow(wa);
+        }
+        if (imb > 0) {
+            b.v = narrow(vb);
+            b.w = narrow(wb);
+        }
     }
     template <int Row> GUARDIAN_HOT Real speed(const ContactPoint& p) const {
         return sumOfDots(p.dir[Row].cwiseProduct(vb - va), p.armB[Row].cwiseProduct(wb),
