@@ -12,36 +12,20 @@
 #include "iPhysicsScene.h"
 #include "iPhysicsSceneSettings.h"
 
+#include "../TimedScene.h"
+
 #include <benchmark/benchmark.h>
 
-#include <chrono>
 #include <cmath>
 #include <functional>
 #include <memory>
 
 namespace {
 
-struct Run {
-    iPhysicsScene* scene;
-    World* world;
-    explicit Run(bool continuous, const std::function<void(World&)>& build) {
-        scene = CreatePhysicsScene(nullptr);
+// A scene with the continuous stage on or off.
+struct Run : TimedScene {
+    Run(bool continuous, const Build& build) : TimedScene(build) {
         settingsOf(scene)->setContinuousCollisionEnabled(continuous);
-        scene->update(0);
-        world = new World(scene);
-        build(*world);
-    }
-    ~Run() {
-        delete world;
-        scene->Delete();
-    }
-    Run(const Run&) = delete;
-    Run& operator=(const Run&) = delete;
-    // One fixed step; returns its wall time in seconds.
-    double step(int i) {
-        auto t0 = std::chrono::steady_clock::now();
-        scene->update(int(std::ceil(i * 1000.0 / 60.0)));
-        return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     }
 };
 

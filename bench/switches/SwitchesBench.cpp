@@ -20,9 +20,10 @@
 #include "iRigidBodySwitches.h"
 #include "iSceneSwitches.h"
 
+#include "../TimedScene.h"
+
 #include <benchmark/benchmark.h>
 
-#include <chrono>
 #include <cmath>
 #include <functional>
 #include <memory>
@@ -34,30 +35,8 @@ struct Counter final : iCollisionListener {
     void HitWall(iRigidBody*, Vector, Vector) override { ++calls; }
 };
 
-using Build = std::function<void(World&)>;
-
-struct Run {
-    iPhysicsScene* scene;
-    World* world;
-    explicit Run(const Build& build) {
-        scene = CreatePhysicsScene(nullptr);
-        scene->update(0);
-        world = new World(scene);
-        build(*world);
-    }
-    ~Run() {
-        delete world;
-        scene->Delete();
-    }
-    Run(const Run&) = delete;
-    Run& operator=(const Run&) = delete;
-    // One fixed step; returns its wall time in seconds.
-    double step(int i) {
-        auto t0 = std::chrono::steady_clock::now();
-        scene->update(int(std::ceil(i * 1000.0 / 60.0)));
-        return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    }
-};
+using Build = TimedScene::Build;
+using Run = TimedScene;
 
 // Baseline: build; switched: build, then change(world). warmup steps untimed, then steps timed.
 void compare(benchmark::State& state, int warmup, int steps, const Build& build, const Build& change) {

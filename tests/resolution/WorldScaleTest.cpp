@@ -16,6 +16,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <functional>
 #include <iterator>
 #include <string>
 
@@ -100,44 +101,38 @@ void expectWithin(float value, float truth, float fraction, const std::string& w
     EXPECT_NEAR(value, truth, fraction * std::fabs(truth)) << what;
 }
 
+// measure(s) at every scale: each result within 1 % of the analytic truth and of the result at s = 1.
+void expectAtEveryScale(const std::string& what, float truth, const std::function<float(float)>& measure) {
+    float result[3];
+    for (int i = 0; i < 3; ++i) {
+        result[i] = measure(kScales[i]);
+        expectWithin(result[i], truth, 0.01f, what + " at s = " + std::to_string(kScales[i]));
+        ::testing::Test::RecordProperty(what + "_s" + std::to_string(i), std::to_string(result[i] / truth));
+    }
+    for (int i = 0; i < 3; ++i)
+        expectWithin(result[i], result[1], 0.01f, what + ": against s = 1, s index " + std::to_string(i));
+}
+
 } // namespace
 
 TEST(WorldScale, ABounceReboundsToESquaredTimesItsDropAtEveryScale) {
-    const float h = 1.0f, truth = 0.64f * h;
-    float apex[3];
-    for (int i = 0; i < 3; ++i) {
-        apex[i] = reboundApex(kScales[i], h);
-        expectWithin(apex[i], truth, 0.01f, "rebound apex at s = " + std::to_string(kScales[i]));
-        RecordProperty("apex_over_e2h_s" + std::to_string(i), std::to_string(apex[i] / truth));
-    }
-    for (int i = 0; i < 3; ++i)
-        expectWithin(apex[i], apex[1], 0.01f, "against s = 1, s index " + std::to_string(i));
+    const float h = 1.0f;
+    expectAtEveryScale("apex_over_e2h", 0.64f * h, [h](float s) { return reboundApex(s, h); });
 }
 
 TEST(WorldScale, ASlideStopsAfterVSquaredOverTwoMuGAtEveryScale) {
-    const float v = 4.0f, truth = v * v / (2.0f * 0.5f * kG);
-    float d[3];
-    for (int i = 0; i < 3; ++i) {
-        d[i] = slideDistance(kScales[i], v);
-        expectWithin(d[i], truth, 0.01f, "slide at s = " + std::to_string(kScales[i]));
-        RecordProperty("slide_over_truth_s" + std::to_string(i), std::to_string(d[i] / truth));
-    }
-    for (int i = 0; i < 3; ++i)
-        expectWithin(d[i], d[1], 0.01f, "against s = 1, s index " + std::to_string(i));
+    const float v = 4.0f;
+    expectAtEveryScale("slide_over_truth", v * v / (2.0f * 0.5f * kG),
+                       [v](float s) { return slideDistance(s, v); });
 }
 
 TEST(WorldScale, ASlidingBallRollsAtFiveSeventhsOfItsSpeedAtEveryScale) {
     const float v = 3.0f, truth = 5.0f / 7.0f * v;
-    float speed[3];
-    for (int i = 0; i < 3; ++i) {
-        Roll roll = rollingSpeed(kScales[i], v);
-        speed[i] = roll.speed;
-        expectWithin(roll.speed, truth, 0.01f, "rolling speed at s = " + std::to_string(kScales[i]));
-        EXPECT_LT(roll.slip, 0.01f * truth) << "still slipping at s = " << kScales[i];
-        RecordProperty("roll_over_truth_s" + std::to_string(i), std::to_string(roll.speed / truth));
-    }
-    for (int i = 0; i < 3; ++i)
-        expectWithin(speed[i], speed[1], 0.01f, "against s = 1, s index " + std::to_string(i));
+    expectAtEveryScale("roll_over_truth", truth, [v, truth](float s) {
+        const Roll roll = rollingSpeed(s, v);
+        EXPECT_LT(roll.slip, 0.01f * truth) << "still slipping at s = " << s;
+        return roll.speed;
+    });
 }
 
 // A 1 mm steel cube and a 1 km granite rock dropped flat onto the floor from 1 % of their size in one metre
