@@ -45,7 +45,7 @@ void ContactSolver::buildManifolds(const CollisionContact* contacts, size_t coun
         RBDynamics* rootA = rb1 ? rb1->getDynamics().attachmentRoot() : nullptr;
         RBDynamics* rootB = rb2 ? rb2->getDynamics().attachmentRoot() : nullptr;
         bool fixedA = !rootA || immovable(*rootA), fixedB = !rootB || immovable(*rootB);
-        if (rootA == rootB || (fixedA && fixedB)) continue;
+        if (rootA == rootB || (fixedA && fixedB) || joinedWithoutContact(rootA, rootB)) continue;
         Vec3 n = toEigen(c.normal);
         if (!n.allFinite() || n.squaredNorm() < 0.5f || !std::isfinite(c.depth)) continue;
         n.normalize();

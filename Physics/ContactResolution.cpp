@@ -148,6 +148,14 @@ void Islands::build(const std::vector<RigidBody*>& bodies, const SceneBodyAccess
     }
 }
 
+void Islands::join(const RigidBody* a, const RigidBody* b) {
+    const int* ia = a ? m_index.find(a) : nullptr;
+    const int* ib = b ? m_index.find(b) : nullptr;
+    if (!ia || !ib) return;
+    const int x = find(*ia), y = find(*ib);
+    if (x != y) m_parent[size_t(std::max(x, y))] = std::min(x, y);
+}
+
 bool Islands::outsiderMoves(const RBDynamics& body) {
     const RBDynamics& d = *body.attachmentRoot();
     Pose now{d.position, d.orientation};

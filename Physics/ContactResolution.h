@@ -75,6 +75,8 @@ public:
     // Adds dt of rest to bodies below the sleep speeds; an island whose bodies all rested long enough sleeps.
     // (resolveContacts zeroes the rest time of a body still being pushed out of an overlap.)
     void updateSleep(const std::vector<RigidBody*>& bodies, float dt);
+    // Two bodies a joint holds together are one island (nullptr, the world, joins nothing).
+    void join(const RigidBody* a, const RigidBody* b);
 
     // What the next step reads of the last (snapshots): the poses of the bodies outside the islands.
     struct Pose {

@@ -1,5 +1,6 @@
 // ContactSolver.cpp - the sub-stepped solve: soft contacts, Coulomb friction, warm starting, restitution.
 #include "ContactSolver.h"
+#include "Joint.h"
 #include "SolverRows.h"
 
 #include "MathEigen.h"
@@ -97,6 +98,7 @@ void ContactSolver::collect(const CollisionContact* contacts, size_t count, cons
     m_bodyIndex.clear();
     buildManifolds(contacts, count, access);
     matchPreviousImpulses();
+    enterJoints(access);
 }
 
 void ContactSolver::recollect(const CollisionContact* contacts, size_t count,
@@ -118,18 +120,25 @@ void ContactSolver::solve(Real dt, const SolverBodyAccess& access) {
     // a quarter of the sub-step rate can follow (a small shape's contact excepted: contactSoftness).
     m_omega = 2.0f * 3.14159265f * std::min(Real(m_settings.contactHertz), 0.25f / h);
     m_soft = softness(m_omega, m_settings.dampingRatio, h);
+    m_h = h;
+    m_jointSoft = softness(2.0f * 3.14159265f * std::min(Real(m_settings.jointHertz), 0.25f / h),
+                           m_settings.jointDampingRatio, h);
     prepare(dt, h);
     orderByLevel();
     splitForces();
     for (int i = 0; i < n; ++i) {
         addForces(1.0f / Real(n));
         warmStart(i == 0);
+        warmStartJoints();
+        solveJoints(h, JointPass::Velocity);
         solveContacts(h, false); // the velocities: approach stopped, nothing pushed
         propagateShock(h);       // what a light body under a heavy one could not stop
         saveVelocities();
-        solveContacts(h, true);  // the push out, on top (at the same poses: the gaps just measured)
-        moveBodies(h);           // by the velocities plus the push, capped
-        restoreVelocities();     // the push out's velocity is not kept
+        solveJoints(h, JointPass::PushOut);
+        solveContacts(h, true); // the push out, on top (at the same poses: the gaps just measured)
+        moveBodies(h);          // by the velocities plus the push, capped
+        restoreVelocities();    // the push out's velocity is not kept
+        solveJoints(h, JointPass::Relax);
         solveContacts(h, false); // relax: the velocities again, at the new poses
     }
     findBounces();
@@ -320,6 +329,7 @@ GUARDIAN_HOT void ContactSolver::solveFriction(Manifold& m, PairVelocity& pair) 
 
 // The velocities the sub-step solved for, and the impulses that produced them, before the push out.
 void ContactSolver::saveVelocities() {
+    saveJoints();
     for (SolverBody& b : m_bodies) {
         b.vSolved = b.v;
         b.wSolved = b.w;
@@ -334,6 +344,7 @@ void ContactSolver::saveVelocities() {
 }
 
 void ContactSolver::restoreVelocities() {
+    restoreJoints();
     for (SolverBody& b : m_bodies) {
         b.v = b.vSolved;
         b.w = b.wSolved;

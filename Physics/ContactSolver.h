@@ -36,6 +36,8 @@ struct RBDynamics;
 namespace physics {
 
 struct PairVelocity; // SolverRows.h
+class Joint;         // Joint.h
+enum class JointPass;
 
 // Lengths and speeds are in the world's length unit (units per metre: lengthUnitsPerMetre, default 1); the
 // figures below are the metre defaults, and withLengthUnit() scales them all for another unit.
@@ -64,6 +66,12 @@ struct SolverSettings {
     float restingOverlap = 0.005f; // of the smaller shape's bounding radius
     float maxContactTurn = 6.2831853f;
     bool frictionOn = true, restitutionOn = true; // off: every pair's coefficient is 0 (iSceneSwitches)
+    // Joints (Joint.h): rigid in the velocity passes, swept jointIterations times in each; their drift
+    // corrected in the push out at the bias rate of a soft constraint of this frequency (capped at a quarter
+    // of the sub-step rate) and damping ratio (JointStage.cpp).
+    int jointIterations = 2;
+    float jointHertz = 60.0f;
+    float jointDampingRatio = 1.0f;
 };
 
 // s with every length and speed of the metre defaults (SolverSettings{}) scaled to unitsPerMetre.
@@ -110,6 +118,13 @@ public:
     //  2. solve, once the forces acted (each movable body's velocities and what the forces added, written
     //     into body(i) by whoever entered it): moves those bodies through the step, from where it started.
     void collect(const CollisionContact* contacts, size_t count, const SolverBodyAccess& access);
+    // This step's joints, before collect (JointStage.cpp): their bodies enter the solve with the contacts'
+    // (a joint whose two bodies both rest is left out), and contacts between bodies they join without
+    // collideConnected are dropped. The pointers are only read until solve returns.
+    void setJoints(const std::vector<Joint*>& joints);
+    // The joints solved in the last solve, and the length of its sub-steps (for their reactions).
+    const std::vector<Joint*>& joints() const { return m_solvedJoints; }
+    Real substepLength() const { return m_h; }
     SolverBody& body(int slot) { return m_bodies[size_t(slot)]; }
     // Between the stages, when the contacts changed (a geometry deleted, the space gone): the manifolds again
     // from what is left, or none; the bodies that entered stay and are still moved.
@@ -147,6 +162,13 @@ private:
     void keepPoints(const SolverBodyAccess& access, const FlatMap<PairKey, size_t, PairKeyHash>& reported);
     void matchPreviousImpulses();
     void storeImpulses();
+    // JointStage.cpp
+    bool joinedWithoutContact(const RBDynamics* a, const RBDynamics* b) const;
+    void enterJoints(const SolverBodyAccess& access);
+    void warmStartJoints();
+    void solveJoints(Real h, JointPass pass);
+    void saveJoints();
+    void restoreJoints();
     // ContactSolver.cpp
     void applySwitches();
     void prepare(Real dt, Real h);
@@ -183,7 +205,10 @@ private:
     FlatMap<PairKey, size_t, PairKeyHash> m_lastIndex; // into m_last
     FlatMap<PairKey, size_t, PairKeyHash> m_current;   // into m_manifolds, while they are built
     float m_maxDepthBefore = 0, m_maxDepthAfter = 0;
-    Real m_dt = 0; // the step being solved
+    Real m_dt = 0;                                // the step being solved
+    Real m_h = 0;                                 // its sub-step
+    std::vector<Joint*> m_joints, m_solvedJoints; // set for the step; entered (both bodies not resting)
+    std::vector<std::pair<const RBDynamics*, const RBDynamics*>> m_noContact; // joined roots, sorted
     static constexpr int kProjectionIterations = 4;
     static constexpr int kRestitutionSweeps = 8;
     std::vector<std::pair<size_t, int>> m_bouncing; // (manifold, point) of the points that bounce this step
@@ -203,6 +228,7 @@ private:
     static Softness softness(Real omega, Real dampingRatio, Real h);
     Softness contactSoftness(const Manifold& m, Real h) const;
     Softness m_soft;
+    Softness m_jointSoft; // the joints' push out
     Real m_omega = 0;
 };
 

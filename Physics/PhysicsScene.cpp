@@ -282,6 +282,7 @@ void PhysicsScene::step(float dt) {
     size_t contactCount = 0;
     const unsigned spaceVersion = m_spaceVersion;
     findContacts(dt, spaceVersion, contacts, contactCount);
+    gatherJoints(); // the joints this step solves (SceneJoints.cpp)
     m_profiler.lap(&PhysicsProfile::collision);
 
     // 4. Islands of touching bodies: a sleeping body touched by an awake one wakes, and with it its whole
@@ -290,19 +291,22 @@ void PhysicsScene::step(float dt) {
     //    (both slept): the contacts are found again.
     if (m_sleeping) {
         m_islands.build(m_bodies, m_byDynamics, contacts, contactCount);
+        joinJointIslands(); // jointed bodies sleep and wake together
         m_islands.wakeTouched(m_bodies);
         if (m_islands.wakeIslandMates(m_bodies) && m_spaceVersion == spaceVersion) {
             findContacts(dt, spaceVersion, contacts, contactCount);
             m_islands.build(m_bodies, m_byDynamics, contacts, contactCount);
+            joinJointIslands();
         }
     }
     m_profiler.lap(&PhysicsProfile::islands);
 
-    // 5. The contact solver collects this step's manifolds at the starting poses, before any force acts. The
-    //    bodies they touch enter it: it moves them through the step in step 7.
-    const bool solving = contactCount > 0;
+    // 5. The contact solver collects this step's manifolds and joints at the starting poses, before any force
+    //    acts. The bodies they hold enter it: it moves them through the step in step 7.
+    const bool solving = contactCount > 0 || !m_joints.empty();
     if (solving) {
         m_bodyAccess.startStep(toEigen(m_gravity));
+        m_solver.setJoints(m_joints);
         m_solver.collect(contacts, contactCount, m_bodyAccess);
     }
     m_profiler.lap(&PhysicsProfile::solver);
@@ -328,6 +332,7 @@ void PhysicsScene::step(float dt) {
             m_solver.recollect(m_space->getContactList(), m_space->getNumContacts(), m_bodyAccess);
         m_solver.solve(dt, m_bodyAccess);
         m_bodyAccess.acceptWrites(m_solver.bodies());
+        finishJoints(); // reactions; a joint past its break force breaks
     }
     m_profiler.lap(&PhysicsProfile::solver);
 
@@ -352,7 +357,8 @@ void PhysicsScene::step(float dt) {
     //    RBDynamics::sleeping tells the collision space which pairs need no test.
     if (m_sleeping) m_islands.updateSleep(m_bodies, dt);
 
-    // 10. Removals and deletions requested during the step.
+    // 10. Joints that broke are heard of; then removals and deletions requested during the step.
+    deliverJointBreaks();
     ++m_steps;
     flushDeferred();
     m_profiler.current().steps += 1;

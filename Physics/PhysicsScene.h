@@ -28,6 +28,7 @@
 namespace physics {
 
 class RigidBody;
+class Joint;
 
 class PhysicsScene final : public iPhysicsScene,
                            public iPhysicsSceneSettings,
@@ -129,6 +130,12 @@ private:
     void leaveRegistry(); // no longer the active scene or a candidate for it
     static void onSpaceDestroyed(const iCollisionSpace* dying, void* self);
     void writeFrames(float alpha);
+    // Joints (SceneJoints.cpp): this step's, their islands, their reactions and breaks, letting go.
+    void gatherJoints();
+    void joinJointIslands();
+    void finishJoints();
+    void deliverJointBreaks();
+    void letJointsGo(RigidBody* b);
     RigidBody* sceneBody(const iRigidBody* o) const; // o if it is one of this scene's bodies, else nullptr
 
     std::vector<RigidBody*> m_bodies;
@@ -137,8 +144,9 @@ private:
     // (SceneLifetime.cpp).
     enum class Leave { Remove, Delete };
     std::vector<std::pair<RigidBody*, Leave>> m_leaving;
-    std::vector<iFixedUpdater*> m_updaters;      // nullptr: removed during a step, compacted after it
-    std::vector<PhysicsScene*> m_deferredScenes; // deleted from callbacks of this scene's update
+    std::vector<Joint*> m_joints, m_brokenJoints; // this step's joints; those that broke in it
+    std::vector<iFixedUpdater*> m_updaters;       // nullptr: removed during a step, compacted after it
+    std::vector<PhysicsScene*> m_deferredScenes;  // deleted from callbacks of this scene's update
     iCollisionSpace* m_space = nullptr;
     unsigned m_spaceVersion = 0;         // changes whenever m_space does (its contact list is then gone)
     unsigned long long m_membership = 0; // changes whenever a body joins or leaves (snapshots)

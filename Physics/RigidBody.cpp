@@ -3,6 +3,7 @@
 
 #include "BodyValidation.h"
 #include "FrameDriver.h"
+#include "Joint.h"
 #include "PhysicsScene.h"
 #include "iFrame.h"
 #include "iUtilities.h"
@@ -59,6 +60,7 @@ RigidBody::RigidBody(iFrame* frame) {
 
 RigidBody::~RigidBody() {
     bindFrame(nullptr);
+    while (!joints.empty()) joints.back()->letGo(this); // each leaves the list
     // Collision spaces unbind their geometries from this body before it goes (iRigidBody.h).
     rigidBodyDestroyed(this);
     // m_dyn's destructor then releases any bodies attached to this one (they keep their world pose).

@@ -23,6 +23,7 @@ class iPhysicsFrame;
 namespace physics {
 
 class PhysicsScene;
+class Joint;
 
 class RigidBody final : public iRigidBody,
                         public iRigidBodyMotion,
@@ -178,6 +179,8 @@ public:
     bool hasComposite = false;
     // Its index among the contact solver's bodies while the solver moves it through this step (-1: not).
     int solverSlot = -1;
+    // The joints that hold this body (Joint.h keeps the list): they let go when it is killed or deleted.
+    std::vector<Joint*> joints;
     Real compositeMass = 0;
     Mat3 compositeInertia = Mat3::Zero();
 

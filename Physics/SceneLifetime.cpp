@@ -9,6 +9,7 @@
 // lists.
 #include "PhysicsScene.h"
 
+#include "Joint.h"
 #include "RigidBody.h"
 #include "iCollisionSpace.h"
 #include "iUtilities.h"
@@ -84,6 +85,7 @@ void PhysicsScene::endSteps() {
     std::vector<PhysicsScene*> doomed;
     doomed.swap(m_deferredScenes);
     for (PhysicsScene* s : doomed) delete s;
+    Joint::deleteDeferred(); // joints deleted from callbacks
 }
 
 void PhysicsScene::forget(RigidBody* b) {
@@ -115,6 +117,7 @@ void PhysicsScene::flushDeferred() {
             b->pendingRemoval = false;
             forget(b);
             b->setScene(nullptr);
+            if (!b->isAlive()) letJointsGo(b); // killed: its joints let go (seed 000's spring)
         }
     }
     m_updaters.erase(std::remove(m_updaters.begin(), m_updaters.end(), nullptr), m_updaters.end());

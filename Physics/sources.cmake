@@ -1,6 +1,15 @@
 # The simulator's files, relative to Physics/ (also read by the package generator).
 set(GUARDIAN_PHYSICS_SOURCES
+  BallJoint.cpp
   BodyMotion.cpp
+  DistanceJoint.cpp
+  FixedJoint.cpp
+  HingeJoint.cpp
+  Joint.cpp
+  JointStage.cpp
+  SceneJoints.cpp
+  SliderJoint.cpp
+  SpringJoint.cpp
   BodyValidation.cpp
   Composite.cpp
   FrameDriver.cpp
@@ -29,6 +38,8 @@ set(GUARDIAN_PHYSICS_HEADERS
   SolverRows.h
   ContinuousStage.h
   Integrators.h
+  Joint.h
+  JointRows.h
   MathBridge.h
   PhysicsScene.h
   RigidBody.h)

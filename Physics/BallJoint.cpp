@@ -1,0 +1,114 @@
+// BallJoint.cpp - the anchors together, the bodies turning freely about them within an optional swing cone
+// and twist range (iBallJoint.h).
+//
+// Rows (JointRows.h): the point block (C = pB - pA); the cone, a one-sided row on the swing angle theta
+// between the twist axes tA and tB, gap = cone - theta, Cdot = -(wB - wA) . (tA x tB)/|tA x tB|; the twist
+// limits, one-sided rows on B's twist about the axis in A's frame (swing-twist split), Cdot = (wB - wA) . t
+// with t the mean of the two axes.
+#include "Joint.h"
+
+#include "iBallJoint.h"
+#include "iUtilities.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace physics {
+
+namespace {
+
+constexpr Real kPi = Real(3.14159265358979);
+enum Row { Cone, TwistLower, TwistUpper };
+
+Real swingAngle(const Quat& qA, const Quat& qB) {
+    const Real c = (qA * Vec3::UnitX()).dot(qB * Vec3::UnitX());
+    return std::acos(std::clamp(c, Real(-1), Real(1)));
+}
+
+class BallJoint final : public JointObject<iBallJoint> {
+public:
+    BallJoint(RigidBody* a, RigidBody* b, const JointFrame& fa, const JointFrame& fb)
+        : JointObject(JOINT_Ball, a, b, fa, fb) {
+        m_usesPoint = true;
+        m_rowCount = 3;
+    }
+
+    bool setConeLimit(float angle) override {
+        if (!(angle > 0) || std::isnan(angle)) {
+            error(L"iBallJoint::setConeLimit: the angle must be positive (pi or more: no cone); refused");
+            return false;
+        }
+        m_cone = std::min(Real(angle), kPi);
+        return true;
+    }
+    float getConeLimit() const override { return float(m_cone); }
+    bool setTwistLimits(float lower, float upper) override {
+        if (!(lower >= -kPi && lower <= upper && upper <= kPi)) {
+            error(L"iBallJoint::setTwistLimits: needs -pi <= lower <= upper <= pi; refused");
+            return false;
+        }
+        m_twistLower = lower;
+        m_twistUpper = upper;
+        return true;
+    }
+    float getSwingAngle() const override {
+        JointFrame a, b;
+        worldFrames(a, b);
+        return float(swingAngle(a.basis, b.basis));
+    }
+    float getTwistAngle() const override {
+        JointFrame a, b;
+        worldFrames(a, b);
+        return float(twistAngle(a.basis, b.basis));
+    }
+
+    void solve(SolverBody& a, SolverBody& b, Real h, JointPass pass, const JointSoftness& soft) override {
+        const bool push = pass == JointPass::PushOut;
+        const Quat qA = worldBasis(a, m_frameA), qB = worldBasis(b, m_frameB);
+        const Vec3 tA = qA * Vec3::UnitX(), tB = qB * Vec3::UnitX();
+        if (m_cone < kPi) {
+            Vec3 n = tA.cross(tB);
+            const Real length = n.norm();
+            if (length > Real(1e-6)) {
+                m_rows[Cone].setAngular(a, b, -n / length);
+                m_rows[Cone].solveLimit(a, b, m_cone - swingAngle(qA, qB), h, push, soft);
+            } else {
+                m_rows[Cone].impulse = 0; // the axes aligned: far from any cone
+            }
+        } else {
+            m_rows[Cone].impulse = 0;
+        }
+        if (m_twistLower > -kPi || m_twistUpper < kPi) {
+            const Real twist = twistAngle(qA, qB);
+            const Vec3 t = (tA + tB).normalized();
+            m_rows[TwistLower].setAngular(a, b, t);
+            m_rows[TwistLower].solveLimit(a, b, twist - m_twistLower, h, push, soft);
+            m_rows[TwistUpper].setAngular(a, b, -t);
+            m_rows[TwistUpper].solveLimit(a, b, m_twistUpper - twist, h, push, soft);
+        } else {
+            m_rows[TwistLower].impulse = m_rows[TwistUpper].impulse = 0;
+        }
+        const Vec3 pA = worldPoint(a, m_frameA), pB = worldPoint(b, m_frameB);
+        m_point.setArms(a, b, pA - a.com, pB - b.com);
+        if (push)
+            m_point.solve(a, b, soft.biasRate * (pB - pA), soft);
+        else
+            m_point.solve(a, b, Vec3::Zero());
+    }
+
+private:
+    Real m_cone = kPi, m_twistLower = -kPi, m_twistUpper = kPi;
+};
+
+} // namespace
+
+} // namespace physics
+
+extern "C" iBallJoint* CreateBallJoint(iRigidBody* a, iRigidBody* b, const Vector& anchor,
+                                       const Vector& twistAxis) {
+    physics::RigidBody *ra, *rb;
+    physics::JointFrame fa, fb;
+    if (!physics::jointFrames(L"CreateBallJoint", a, b, anchor, anchor, twistAxis, ra, rb, fa, fb))
+        return nullptr;
+    return new physics::BallJoint(ra, rb, fa, fb);
+}

@@ -1,0 +1,120 @@
+// HingeJoint.cpp - B turns relative to A about the hinge axis only (iHingeJoint.h).
+//
+// Rows (JointRows.h): the anchors together (point block, C = pB - pA); the axes aligned, two angular rows
+// across A's axis (C_i = (aA x aB) . p_i, Cdot_i = (wB - wA) . p_i); the limits, one-sided rows on the angle
+// theta (the twist of B's frame in A's, Cdot = (wB - wA) . aA); the motor, Cdot = speed with |lambda| <=
+// maxTorque h. Solved motor and limits first, the point last (what matters most ends the sweep exact).
+#include "Joint.h"
+
+#include "RigidBody.h"
+#include "iHingeJoint.h"
+#include "iUtilities.h"
+
+#include <cmath>
+
+namespace physics {
+
+namespace {
+
+enum Row { AcrossY, AcrossZ, Lower, Upper, Motor };
+
+Vec3 angularVelocity(const RigidBody* body) {
+    return body ? toEigen(body->getDynamics().attachmentRoot()->angularVelocity) : Vec3::Zero();
+}
+
+class HingeJoint final : public JointObject<iHingeJoint> {
+public:
+    HingeJoint(RigidBody* a, RigidBody* b, const JointFrame& fa, const JointFrame& fb)
+        : JointObject(JOINT_Hinge, a, b, fa, fb) {
+        m_usesPoint = true;
+        m_rowCount = 5;
+    }
+
+    bool setLimits(float lower, float upper) override {
+        const float pi = 3.14159265f;
+        if (!(lower > -pi && lower <= upper && upper < pi)) {
+            error(L"iHingeJoint::setLimits: needs -pi < lower <= upper < pi; refused");
+            return false;
+        }
+        m_lower = lower;
+        m_upper = upper;
+        m_limitsOn = true;
+        return true;
+    }
+    void setLimitsEnabled(bool on) override { m_limitsOn = on; }
+    bool setMotor(float speed, float maxTorque) override {
+        if (!std::isfinite(speed) || !(maxTorque >= 0) || !std::isfinite(maxTorque)) {
+            error(L"iHingeJoint::setMotor: needs a finite speed and a finite torque >= 0; refused");
+            return false;
+        }
+        m_speed = speed;
+        m_maxTorque = maxTorque;
+        return true;
+    }
+    float getAngle() const override {
+        JointFrame a, b;
+        worldFrames(a, b);
+        return float(twistAngle(a.basis, b.basis));
+    }
+    float getSpeed() const override {
+        JointFrame a, b;
+        worldFrames(a, b);
+        return float((angularVelocity(bodyB()) - angularVelocity(bodyA())).dot(a.basis * Vec3::UnitX()));
+    }
+
+    void solve(SolverBody& a, SolverBody& b, Real h, JointPass pass, const JointSoftness& soft) override {
+        const Quat qA = worldBasis(a, m_frameA), qB = worldBasis(b, m_frameB);
+        const Vec3 axis = qA * Vec3::UnitX();
+        const bool push = pass == JointPass::PushOut;
+        if (m_maxTorque > 0 && !push) {
+            JointRow& motor = m_rows[Motor];
+            motor.setAngular(a, b, axis);
+            motor.lower = -m_maxTorque * h;
+            motor.upper = m_maxTorque * h;
+            motor.solve(a, b, -m_speed);
+        } else if (m_maxTorque == 0) {
+            m_rows[Motor].impulse = 0;
+        }
+        if (m_limitsOn) {
+            const Real angle = twistAngle(qA, qB);
+            m_rows[Lower].setAngular(a, b, axis);
+            m_rows[Lower].solveLimit(a, b, angle - m_lower, h, push, soft);
+            m_rows[Upper].setAngular(a, b, -axis);
+            m_rows[Upper].solveLimit(a, b, m_upper - angle, h, push, soft);
+        } else {
+            m_rows[Lower].impulse = m_rows[Upper].impulse = 0;
+        }
+        const Vec3 error = axis.cross(qB * Vec3::UnitX());
+        for (int i = AcrossY; i <= AcrossZ; ++i) {
+            const Vec3 across = qA * (i == AcrossY ? Vec3::UnitY() : Vec3::UnitZ());
+            m_rows[i].setAngular(a, b, across);
+            if (push)
+                m_rows[i].solve(a, b, soft.biasRate * error.dot(across), soft);
+            else
+                m_rows[i].solve(a, b, 0);
+        }
+        const Vec3 pA = worldPoint(a, m_frameA), pB = worldPoint(b, m_frameB);
+        m_point.setArms(a, b, pA - a.com, pB - b.com);
+        if (push)
+            m_point.solve(a, b, soft.biasRate * (pB - pA), soft);
+        else
+            m_point.solve(a, b, Vec3::Zero());
+    }
+
+private:
+    bool m_limitsOn = false;
+    Real m_lower = 0, m_upper = 0, m_speed = 0, m_maxTorque = 0;
+};
+
+} // namespace
+
+} // namespace physics
+
+extern "C" iHingeJoint* CreateHingeJoint(iRigidBody* a, iRigidBody* b, const Vector& anchor,
+                                         const Vector& axis) {
+    physics::RigidBody *ra, *rb;
+    physics::JointFrame fa, fb;
+    if (!physics::jointFrames(L"CreateHingeJoint", a, b, anchor, anchor, axis, ra, rb, fa, fb))
+        return nullptr;
+    return new physics::HingeJoint(ra, rb, fa, fb);
+}

@@ -1,0 +1,195 @@
+// Joint.cpp - what every joint shares: its bodies' joint lists, letting go, deferred deletion, the frames
+// entering a step, the generic warm start, save/restore and reaction, breaking, and the factories' checks.
+#include "Joint.h"
+
+#include "MathEigen.h"
+#include "PhysicsScene.h"
+#include "RigidBody.h"
+#include "iUtilities.h"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+namespace physics {
+
+namespace {
+std::vector<Joint*>& deferredDeletes() {
+    static std::vector<Joint*> all;
+    return all;
+}
+void leave(RigidBody* body, Joint* joint) {
+    if (!body) return;
+    auto& list = body->joints;
+    list.erase(std::remove(list.begin(), list.end(), joint), list.end());
+}
+} // namespace
+
+Joint::Joint(JointType type, RigidBody* a, RigidBody* b, const JointFrame& localA, const JointFrame& localB)
+    : m_localA(localA), m_localB(localB), m_type(type), m_a(a), m_b(b) {
+    if (m_a) m_a->joints.push_back(this);
+    if (m_b) m_b->joints.push_back(this);
+}
+
+Joint::~Joint() {
+    leave(m_a, this);
+    leave(m_b, this);
+}
+
+void Joint::letGo(const RigidBody* body) {
+    if (body != m_a && body != m_b) return;
+    RigidBody*& held = body == m_a ? m_a : m_b;
+    leave(held, this);
+    held = nullptr;
+    m_letGo = true;
+}
+
+void Joint::destroy() {
+    if (m_deleted) return;
+    if (!PhysicsScene::updating()) {
+        delete this;
+        return;
+    }
+    // The step may hold it (its list of joints, a break event): out of the simulation now, freed later.
+    m_deleted = true;
+    leave(m_a, this);
+    leave(m_b, this);
+    m_a = m_b = nullptr;
+    deferredDeletes().push_back(this);
+}
+
+void Joint::deleteDeferred() {
+    std::vector<Joint*> doomed;
+    doomed.swap(deferredDeletes());
+    for (Joint* j : doomed) delete j;
+}
+
+iRigidBody* Joint::publicBodyA() const { return m_a; }
+iRigidBody* Joint::publicBodyB() const { return m_b; }
+
+bool Joint::setBreakForce(float newtons) {
+    if (!(newtons > 0)) {
+        error(L"iJoint::setBreakForce: the force must be positive (infinite: never breaks); refused");
+        return false;
+    }
+    m_breakForce = newtons;
+    return true;
+}
+
+bool Joint::setBreakTorque(float newtonMetres) {
+    if (!(newtonMetres > 0)) {
+        error(L"iJoint::setBreakTorque: the torque must be positive (infinite: never breaks); refused");
+        return false;
+    }
+    m_breakTorque = newtonMetres;
+    return true;
+}
+
+// A body's frame (relative to its frame's origin, body axes) in its attachment root's frame (relative to the
+// root's position, the solver body's origin), at the poses now: the step's start.
+JointFrame Joint::rootFrame(const RigidBody* body, const JointFrame& local) const {
+    if (!body) return local; // the world
+    const RBDynamics& d = body->getDynamics();
+    const RBDynamics* root = d.attachmentRoot();
+    const Quat qBody = toQuat(d.getWorldOrientation()), qRoot = toQuat(root->orientation);
+    const Vec3 origin = toEigen(d.getWorldOrigin()), rootPosition = toEigen(root->position);
+    JointFrame f;
+    f.point = qRoot.conjugate() * (origin + qBody * local.point - rootPosition);
+    f.basis = (qRoot.conjugate() * qBody * local.basis).normalized();
+    return f;
+}
+
+void Joint::worldFrames(JointFrame& a, JointFrame& b) const {
+    auto world = [](const RigidBody* body, const JointFrame& local) {
+        if (!body) return local;
+        const RBDynamics& d = body->getDynamics();
+        const Quat q = toQuat(d.getWorldOrientation());
+        return JointFrame{toEigen(d.getWorldOrigin()) + q * local.point, (q * local.basis).normalized()};
+    };
+    a = world(m_a, m_localA);
+    b = world(m_b, m_localB);
+}
+
+void Joint::enter(int a, int b) {
+    slotA = a;
+    slotB = b;
+    m_frameA = rootFrame(m_a, m_localA);
+    m_frameB = rootFrame(m_b, m_localB);
+}
+
+// Every sub-step starts from the impulses the last one ended with (the first from last step's), at the
+// poses now.
+void Joint::warmStart(SolverBody& a, SolverBody& b) {
+    if (m_usesPoint) {
+        const Vec3 pA = worldPoint(a, m_frameA), pB = worldPoint(b, m_frameB);
+        m_point.setArms(a, b, pA - a.com, pB - b.com);
+        m_point.apply(a, b, m_point.impulse);
+    }
+    if (m_usesOrientation) m_orientation.apply(a, b, m_orientation.impulse);
+    for (int i = 0; i < m_rowCount; ++i)
+        if (m_rows[i].impulse != 0) m_rows[i].apply(a, b, m_rows[i].impulse);
+}
+
+void Joint::save() {
+    m_point.saved = m_point.impulse;
+    m_orientation.saved = m_orientation.impulse;
+    for (int i = 0; i < m_rowCount; ++i) m_rows[i].saved = m_rows[i].impulse;
+}
+
+void Joint::restore() {
+    m_point.impulse = m_point.saved;
+    m_orientation.impulse = m_orientation.saved;
+    for (int i = 0; i < m_rowCount; ++i) m_rows[i].impulse = m_rows[i].saved;
+}
+
+bool Joint::finish(Real h) {
+    Vec3 linear = m_usesPoint ? m_point.impulse : Vec3::Zero();
+    Vec3 angular = m_usesOrientation ? m_orientation.impulse : Vec3::Zero();
+    for (int i = 0; i < m_rowCount; ++i) {
+        const JointRow& r = m_rows[i];
+        if (r.n.squaredNorm() > 0)
+            linear += r.impulse * r.n;
+        else
+            angular += r.impulse * r.armB;
+    }
+    m_force = linear / h;
+    m_torque = angular / h;
+    if (m_broken || !(m_force.norm() > m_breakForce || m_torque.norm() > m_breakTorque)) return false;
+    m_broken = true;
+    return true;
+}
+
+bool jointFrames(const wchar_t* factory, iRigidBody* a, iRigidBody* b, const Vector& anchorA,
+                 const Vector& anchorB, const Vector& axis, RigidBody*& bodyA, RigidBody*& bodyB,
+                 JointFrame& localA, JointFrame& localB) {
+    auto refuse = [factory](const wchar_t* why) {
+        error((std::wstring(factory) + L": " + why + L"; refused").c_str());
+        return false;
+    };
+    bodyA = dynamic_cast<RigidBody*>(a);
+    bodyB = dynamic_cast<RigidBody*>(b);
+    if (!a) return refuse(L"body A is nullptr (the world may only be body B)");
+    if (!bodyA || (b && !bodyB)) return refuse(L"only bodies made by CreateRigidBody or CreatePhysicsFrame");
+    if (a == b) return refuse(L"a body cannot be joined to itself");
+    if (bodyA->dying() || (bodyB && bodyB->dying())) return refuse(L"a body is being deleted");
+    if (!anchorA.isFinite() || !anchorB.isFinite() || !axis.isFinite() || !(axis.length() > 1e-6f))
+        return refuse(L"anchors and axis must be finite and the axis not zero");
+    const Vec3 x = toEigen(axis).normalized();
+    Vec3 across[2];
+    tangentBasis(x, across); // (x, across[0], across[1]) right-handed
+    Mat3 axes;
+    axes << x, across[0], across[1];
+    const Quat world = Quat(axes).normalized();
+    auto local = [&](const RigidBody* body, const Vector& anchor) {
+        if (!body) return JointFrame{toEigen(anchor), world};
+        const RBDynamics& d = body->getDynamics();
+        const Quat q = toQuat(d.getWorldOrientation());
+        return JointFrame{q.conjugate() * (toEigen(anchor) - toEigen(d.getWorldOrigin())),
+                          (q.conjugate() * world).normalized()};
+    };
+    localA = local(bodyA, anchorA);
+    localB = local(bodyB, anchorB);
+    return true;
+}
+
+} // namespace physics

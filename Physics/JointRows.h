@@ -1,0 +1,167 @@
+// JointRows.h - the building blocks joints are made of, as velocity constraints between two solver bodies:
+// a point block (3 rows: two anchors together), an orientation block (3 rows: relative rotation held), and a
+// one-dimensional row (a limit, a motor, an axis kept, a distance).
+//
+// A row's velocity is Cdot = n . (vB - vA) + armB . wB - armA . wA (n zero for an angular row). Its effective
+// mass is 1 / K with K = (mA^-1 + mB^-1) |n|^2 + armA . IA^-1 armA + armB . IB^-1 armB. Each solve adds
+//   lambda = -m (Cdot + bias) (rigid; Catto, "Iterative Dynamics with Temporal Coherence", GDC 2005),
+// clamped so that the row's accumulated impulse stays within [lower, upper]. The bias corrects drift softly
+// in the solver's push-out pass only (like the contacts' push out: moved by, then forgotten), so a joint
+// never gains energy from its own correction. A limit is a one-sided row whose gap (how far from the limit)
+// may close within the sub-step and no more (speculative, as the contacts' kept points).
+// Blocks solve their three rows at once (K is 3x3), which converges where three rows one at a time would
+// not (a chain of links: Jolt's PointConstraintPart and RotationEulerConstraintPart).
+#pragma once
+
+#include "ContactManifold.h"
+
+#include <algorithm>
+#include <limits>
+
+namespace physics {
+
+// The soft correction of a position error C: velocity target bias = biasRate C, the solve's mass scaled by
+// massScale, and impulseScale of the accumulated impulse taken back (Catto, "Soft Step"; the contacts' own).
+struct JointSoftness {
+    Real biasRate = 0, massScale = 1, impulseScale = 0;
+};
+
+// A joint's anchor and axes on one body, in its root's frame (relative to the root's origin); the world's in
+// world coordinates.
+struct JointFrame {
+    Vec3 point = Vec3::Zero();
+    Quat basis = Quat::Identity(); // x is the joint's axis (hinge, slider, twist), y and z across it
+};
+
+// Where a frame is now on a solver body.
+inline Vec3 worldPoint(const SolverBody& b, const JointFrame& f) { return b.origin + b.rotation * f.point; }
+inline Quat worldBasis(const SolverBody& b, const JointFrame& f) { return b.rotation * f.basis; }
+
+inline Mat3 cross(const Vec3& v) {
+    Mat3 m;
+    m << 0, -v.z(), v.y(), v.z(), 0, -v.x(), -v.y(), v.x(), 0;
+    return m;
+}
+
+struct JointRow {
+    Vec3 n = Vec3::Zero(), armA = Vec3::Zero(), armB = Vec3::Zero();
+    Real mass = 0;
+    Real impulse = 0, saved = 0; // accumulated this sub-step; before the push out
+    Real lower = -std::numeric_limits<Real>::infinity(), upper = std::numeric_limits<Real>::infinity();
+
+    // A linear row along n between world points with arms rA, rB from the centres of mass.
+    void setLinear(const SolverBody& a, const SolverBody& b, const Vec3& dir, const Vec3& rA,
+                   const Vec3& rB) {
+        n = dir;
+        armA = rA.cross(dir);
+        armB = rB.cross(dir);
+        setMass(a, b);
+    }
+    // An angular row about axis.
+    void setAngular(const SolverBody& a, const SolverBody& b, const Vec3& axis) {
+        n = Vec3::Zero();
+        armA = armB = axis;
+        setMass(a, b);
+    }
+    void setMass(const SolverBody& a, const SolverBody& b) {
+        const Real k = (a.invMass + b.invMass) * n.squaredNorm() + armA.dot(a.invInertia * armA) +
+                       armB.dot(b.invInertia * armB);
+        mass = k > 0 ? 1 / k : 0;
+    }
+    Real speed(const SolverBody& a, const SolverBody& b) const {
+        return n.dot(b.v - a.v) + armB.dot(b.w) - armA.dot(a.w);
+    }
+    void apply(SolverBody& a, SolverBody& b, Real lambda) const {
+        a.v -= (a.invMass * lambda) * n;
+        a.w -= a.invInertia * (lambda * armA);
+        b.v += (b.invMass * lambda) * n;
+        b.w += b.invInertia * (lambda * armB);
+    }
+    // One solve toward Cdot = -bias, softly (massScale, impulseScale), the total kept in [lower, upper].
+    void solve(SolverBody& a, SolverBody& b, Real bias, const JointSoftness& s = JointSoftness{}) {
+        const Real change = -mass * s.massScale * (speed(a, b) + bias) - s.impulseScale * impulse;
+        const Real total = std::clamp(impulse + change, lower, upper);
+        apply(a, b, total - impulse);
+        impulse = total;
+    }
+    // A one-sided limit whose gap (>= 0: that far from the limit) shrinks as Cdot < 0: the gap may close
+    // within the sub-step (speculative); past the limit, the push-out pass corrects it softly.
+    void solveLimit(SolverBody& a, SolverBody& b, Real gap, Real h, bool useBias, const JointSoftness& s) {
+        lower = 0;
+        upper = std::numeric_limits<Real>::infinity();
+        if (gap > 0)
+            solve(a, b, gap / h);
+        else if (useBias)
+            solve(a, b, s.biasRate * gap, s);
+        else
+            solve(a, b, 0);
+    }
+};
+
+// The anchors pB and pA together: C = pB - pA, Cdot = vB + wB x rB - vA - wA x rA.
+struct PointBlock {
+    Vec3 rA = Vec3::Zero(), rB = Vec3::Zero();
+    Mat3 mass = Mat3::Zero();
+    Vec3 impulse = Vec3::Zero(), saved = Vec3::Zero();
+
+    void setArms(const SolverBody& a, const SolverBody& b, const Vec3& armA, const Vec3& armB) {
+        rA = armA;
+        rB = armB;
+        const Mat3 sA = cross(rA), sB = cross(rB);
+        const Mat3 k =
+            (a.invMass + b.invMass) * Mat3::Identity() - sA * a.invInertia * sA - sB * b.invInertia * sB;
+        mass = k.determinant() != 0 ? Mat3(k.inverse()) : Mat3::Zero();
+    }
+    Vec3 speed(const SolverBody& a, const SolverBody& b) const {
+        return b.v + b.w.cross(rB) - a.v - a.w.cross(rA);
+    }
+    void apply(SolverBody& a, SolverBody& b, const Vec3& lambda) const {
+        a.v -= a.invMass * lambda;
+        a.w -= a.invInertia * rA.cross(lambda);
+        b.v += b.invMass * lambda;
+        b.w += b.invInertia * rB.cross(lambda);
+    }
+    void solve(SolverBody& a, SolverBody& b, const Vec3& bias, const JointSoftness& s = JointSoftness{}) {
+        const Vec3 change = -s.massScale * (mass * (speed(a, b) + bias)) - s.impulseScale * impulse;
+        apply(a, b, change);
+        impulse += change;
+    }
+};
+
+// The relative rotation held: Cdot = wB - wA; the error is the rotation vector taking A's frame to B's.
+struct OrientationBlock {
+    Mat3 mass = Mat3::Zero();
+    Vec3 impulse = Vec3::Zero(), saved = Vec3::Zero();
+
+    void setMass(const SolverBody& a, const SolverBody& b) {
+        const Mat3 k = a.invInertia + b.invInertia;
+        mass = k.determinant() != 0 ? Mat3(k.inverse()) : Mat3::Zero();
+    }
+    void apply(SolverBody& a, SolverBody& b, const Vec3& lambda) const {
+        a.w -= a.invInertia * lambda;
+        b.w += b.invInertia * lambda;
+    }
+    void solve(SolverBody& a, SolverBody& b, const Vec3& bias, const JointSoftness& s = JointSoftness{}) {
+        const Vec3 change = -s.massScale * (mass * (b.w - a.w + bias)) - s.impulseScale * impulse;
+        apply(a, b, change);
+        impulse += change;
+    }
+};
+
+// The small rotation (axis times angle) that turns frame qA into qB, both world.
+inline Vec3 rotationError(const Quat& qA, const Quat& qB) {
+    Quat e = qB * qA.conjugate();
+    if (e.w() < 0) e.coeffs() = -e.coeffs();
+    return 2 * e.vec();
+}
+
+// B's turn relative to A about their common x axis (the twist of a swing-twist split), in (-pi, pi].
+inline Real twistAngle(const Quat& qA, const Quat& qB) {
+    const Quat r = qA.conjugate() * qB; // B in A's joint axes
+    Real angle = 2 * std::atan2(r.x(), r.w());
+    if (angle > Real(3.14159265358979)) angle -= Real(6.28318530717959);
+    if (angle <= -Real(3.14159265358979)) angle += Real(6.28318530717959);
+    return angle;
+}
+
+} // namespace physics

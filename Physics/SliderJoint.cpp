@@ -1,0 +1,122 @@
+// SliderJoint.cpp - B keeps its orientation relative to A and moves along A's axis only (iSliderJoint.h).
+//
+// Rows (JointRows.h), with d = pB - pA and the axis x and the across directions p_i of A's frame: the
+// orientation block (C = the rotation from A's frame to B's); two linear rows across the axis, C_i = d . p_i
+// with A's arm reaching B's anchor (rA + d); the limits, one-sided rows on the travel d . x; the motor,
+// Cdot = speed along x with |lambda| <= maxForce h.
+#include "Joint.h"
+
+#include "RigidBody.h"
+#include "iSliderJoint.h"
+#include "iUtilities.h"
+
+#include <cmath>
+
+namespace physics {
+
+namespace {
+
+enum Row { AcrossY, AcrossZ, Lower, Upper, Motor };
+
+Vec3 velocityAt(const RigidBody* body, const Vec3& point) {
+    if (!body) return Vec3::Zero();
+    const RBDynamics& root = *body->getDynamics().attachmentRoot();
+    return toEigen(root.velocity) + toEigen(root.angularVelocity).cross(point - toEigen(root.position));
+}
+
+class SliderJoint final : public JointObject<iSliderJoint> {
+public:
+    SliderJoint(RigidBody* a, RigidBody* b, const JointFrame& fa, const JointFrame& fb)
+        : JointObject(JOINT_Slider, a, b, fa, fb) {
+        m_usesOrientation = true;
+        m_rowCount = 5;
+    }
+
+    bool setLimits(float lower, float upper) override {
+        if (!(lower <= upper) || !std::isfinite(lower) || !std::isfinite(upper)) {
+            error(L"iSliderJoint::setLimits: needs finite lower <= upper; refused");
+            return false;
+        }
+        m_lower = lower;
+        m_upper = upper;
+        m_limitsOn = true;
+        return true;
+    }
+    void setLimitsEnabled(bool on) override { m_limitsOn = on; }
+    bool setMotor(float speed, float maxForce) override {
+        if (!std::isfinite(speed) || !(maxForce >= 0) || !std::isfinite(maxForce)) {
+            error(L"iSliderJoint::setMotor: needs a finite speed and a finite force >= 0; refused");
+            return false;
+        }
+        m_speed = speed;
+        m_maxForce = maxForce;
+        return true;
+    }
+    float getPosition() const override {
+        JointFrame a, b;
+        worldFrames(a, b);
+        return float((b.point - a.point).dot(a.basis * Vec3::UnitX()));
+    }
+    float getSpeed() const override {
+        JointFrame a, b;
+        worldFrames(a, b);
+        const Vec3 v = velocityAt(bodyB(), b.point) - velocityAt(bodyA(), b.point);
+        return float(v.dot(a.basis * Vec3::UnitX()));
+    }
+
+    void solve(SolverBody& a, SolverBody& b, Real h, JointPass pass, const JointSoftness& soft) override {
+        const bool push = pass == JointPass::PushOut;
+        const Quat qA = worldBasis(a, m_frameA);
+        const Vec3 axis = qA * Vec3::UnitX();
+        const Vec3 pA = worldPoint(a, m_frameA), pB = worldPoint(b, m_frameB);
+        const Vec3 d = pB - pA, rA = pA - a.com + d, rB = pB - b.com;
+        if (m_maxForce > 0 && !push) {
+            JointRow& motor = m_rows[Motor];
+            motor.setLinear(a, b, axis, rA, rB);
+            motor.lower = -m_maxForce * h;
+            motor.upper = m_maxForce * h;
+            motor.solve(a, b, -m_speed);
+        } else if (m_maxForce == 0) {
+            m_rows[Motor].impulse = 0;
+        }
+        if (m_limitsOn) {
+            const Real travel = d.dot(axis);
+            m_rows[Lower].setLinear(a, b, axis, rA, rB);
+            m_rows[Lower].solveLimit(a, b, travel - m_lower, h, push, soft);
+            m_rows[Upper].setLinear(a, b, -axis, rA, rB);
+            m_rows[Upper].solveLimit(a, b, m_upper - travel, h, push, soft);
+        } else {
+            m_rows[Lower].impulse = m_rows[Upper].impulse = 0;
+        }
+        m_orientation.setMass(a, b);
+        if (push)
+            m_orientation.solve(a, b, soft.biasRate * rotationError(qA, worldBasis(b, m_frameB)), soft);
+        else
+            m_orientation.solve(a, b, Vec3::Zero());
+        for (int i = AcrossY; i <= AcrossZ; ++i) {
+            const Vec3 across = qA * (i == AcrossY ? Vec3::UnitY() : Vec3::UnitZ());
+            m_rows[i].setLinear(a, b, across, rA, rB);
+            if (push)
+                m_rows[i].solve(a, b, soft.biasRate * d.dot(across), soft);
+            else
+                m_rows[i].solve(a, b, 0);
+        }
+    }
+
+private:
+    bool m_limitsOn = false;
+    Real m_lower = 0, m_upper = 0, m_speed = 0, m_maxForce = 0;
+};
+
+} // namespace
+
+} // namespace physics
+
+extern "C" iSliderJoint* CreateSliderJoint(iRigidBody* a, iRigidBody* b, const Vector& anchor,
+                                           const Vector& axis) {
+    physics::RigidBody *ra, *rb;
+    physics::JointFrame fa, fb;
+    if (!physics::jointFrames(L"CreateSliderJoint", a, b, anchor, anchor, axis, ra, rb, fa, fb))
+        return nullptr;
+    return new physics::SliderJoint(ra, rb, fa, fb);
+}

@@ -1,0 +1,89 @@
+// JointTestSupport.h - helpers of the joint tests: a body made at a point with a mass and a solid sphere's
+// or box's inertia, and zero crossings for periods.
+#pragma once
+
+#include "../physics/PhysicsTestSupport.h"
+
+#include <cmath>
+#include <vector>
+
+namespace joint_test {
+
+using physics_test::ErrorRecorder;
+using physics_test::kG;
+using physics_test::SceneHolder;
+
+// A body of mass m at p with the inertia of a solid sphere of radius r (2/5 m r^2).
+inline iRigidBody* sphereBody(const Vector& p, float m, float r) {
+    iRigidBody* b = CreateRigidBody(nullptr);
+    RBDynamics& d = b->getDynamics();
+    d.mass = m;
+    d.position = p;
+    const float i = 0.4f * m * r * r;
+    Matrix inertia(1);
+    inertia.m11 = inertia.m22 = inertia.m33 = i;
+    d.setInertiaTensor(inertia);
+    return b;
+}
+
+// A box of mass m, half extents (hx, hy, hz), at p.
+inline iRigidBody* boxBody(const Vector& p, float m, float hx, float hy, float hz) {
+    iRigidBody* b = CreateRigidBody(nullptr);
+    RBDynamics& d = b->getDynamics();
+    d.mass = m;
+    d.position = p;
+    Matrix inertia(1);
+    inertia.m11 = m * (hy * hy + hz * hz) / 3;
+    inertia.m22 = m * (hx * hx + hz * hz) / 3;
+    inertia.m33 = m * (hx * hx + hy * hy) / 3;
+    d.setInertiaTensor(inertia);
+    return b;
+}
+
+// The mean period of a signal sampled every dt, from its upward zero crossings (linearly interpolated).
+inline double meanPeriod(const std::vector<double>& x, double dt) {
+    std::vector<double> ups;
+    for (size_t i = 1; i < x.size(); ++i)
+        if (x[i - 1] < 0 && x[i] >= 0) ups.push_back((double(i - 1) + x[i - 1] / (x[i - 1] - x[i])) * dt);
+    if (ups.size() < 2) return 0;
+    return (ups.back() - ups.front()) / double(ups.size() - 1);
+}
+
+} // namespace joint_test
+
+#include "iFixedUpdater.h"
+#include "iPhysicsSceneHooks.h"
+
+#include <functional>
+
+namespace joint_test {
+
+// Calls fn at the start of every step (it sees the state the last step left).
+struct EveryStep final : iFixedUpdater {
+    std::function<void()> fn;
+    void fixedUpdate(iPhysicsScene*, float) override { fn(); }
+};
+
+// A scene at hz whose steps are taken one at a time; record() runs at the start of each.
+struct StepScene {
+    SceneHolder holder;
+    EveryStep recorder;
+    int hz;
+    long steps = 0;
+    explicit StepScene(int rate = 60) : holder(rate), hz(rate) {
+        recorder.fn = [] {};
+        hooksOf(holder.scene)->addFixedUpdater(&recorder);
+    }
+    ~StepScene() { hooksOf(holder.scene)->removeFixedUpdater(&recorder); }
+    iPhysicsScene* scene() { return holder.scene; }
+    // Exactly n more steps (time in ms rounded up past each step).
+    void step(long n = 1) {
+        for (long i = 0; i < n; ++i) {
+            ++steps;
+            holder.scene->update(int(std::ceil(double(steps) * 1000.0 / hz)));
+        }
+    }
+    void seconds(double s) { step(long(std::lround(s * hz))); }
+};
+
+} // namespace joint_test
