@@ -17,15 +17,16 @@ namespace physics {
 
 namespace {
 
-constexpr Real kPi = Real(3.14159265358979);
-enum Row { Cone, TwistLower, TwistUpper };
+constexpr Real kBallPi = Real(3.14159265358979);
 
-Real swingAngle(const Quat& qA, const Quat& qB) {
+Real ballSwingAngle(const Quat& qA, const Quat& qB) {
     const Real c = (qA * Vec3::UnitX()).dot(qB * Vec3::UnitX());
     return std::acos(std::clamp(c, Real(-1), Real(1)));
 }
 
 class BallJoint final : public JointObject<iBallJoint> {
+    enum Row { Cone, TwistLower, TwistUpper };
+
 public:
     BallJoint(RigidBody* a, RigidBody* b, const JointFrame& fa, const JointFrame& fb)
         : JointObject(JOINT_Ball, a, b, fa, fb) {
@@ -38,12 +39,12 @@ public:
             error(L"iBallJoint::setConeLimit: the angle must be positive (pi or more: no cone); refused");
             return false;
         }
-        m_cone = std::min(Real(angle), kPi);
+        m_cone = std::min(Real(angle), kBallPi);
         return true;
     }
     float getConeLimit() const override { return float(m_cone); }
     bool setTwistLimits(float lower, float upper) override {
-        if (!(lower >= -kPi && lower <= upper && upper <= kPi)) {
+        if (!(lower >= -kBallPi && lower <= upper && upper <= kBallPi)) {
             error(L"iBallJoint::setTwistLimits: needs -pi <= lower <= upper <= pi; refused");
             return false;
         }
@@ -54,7 +55,7 @@ public:
     float getSwingAngle() const override {
         JointFrame a, b;
         worldFrames(a, b);
-        return float(swingAngle(a.basis, b.basis));
+        return float(ballSwingAngle(a.basis, b.basis));
     }
     float getTwistAngle() const override {
         JointFrame a, b;
@@ -66,19 +67,19 @@ public:
         const bool push = pass == JointPass::PushOut;
         const Quat qA = worldBasis(a, m_frameA), qB = worldBasis(b, m_frameB);
         const Vec3 tA = qA * Vec3::UnitX(), tB = qB * Vec3::UnitX();
-        if (m_cone < kPi) {
+        if (m_cone < kBallPi) {
             Vec3 n = tA.cross(tB);
             const Real length = n.norm();
             if (length > Real(1e-6)) {
                 m_rows[Cone].setAngular(a, b, -n / length);
-                m_rows[Cone].solveLimit(a, b, m_cone - swingAngle(qA, qB), h, push, soft);
+                m_rows[Cone].solveLimit(a, b, m_cone - ballSwingAngle(qA, qB), h, push, soft);
             } else {
                 m_rows[Cone].impulse = 0; // the axes aligned: far from any cone
             }
         } else {
             m_rows[Cone].impulse = 0;
         }
-        if (m_twistLower > -kPi || m_twistUpper < kPi) {
+        if (m_twistLower > -kBallPi || m_twistUpper < kBallPi) {
             const Real twist = twistAngle(qA, qB);
             const Vec3 t = (tA + tB).normalized();
             m_rows[TwistLower].setAngular(a, b, t);
@@ -97,7 +98,7 @@ public:
     }
 
 private:
-    Real m_cone = kPi, m_twistLower = -kPi, m_twistUpper = kPi;
+    Real m_cone = kBallPi, m_twistLower = -kBallPi, m_twistUpper = kBallPi;
 };
 
 } // namespace

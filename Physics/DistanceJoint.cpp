@@ -14,9 +14,9 @@ namespace physics {
 
 namespace {
 
-enum Row { Equal, Lower, Upper };
-
 class DistanceJoint final : public JointObject<iDistanceJoint> {
+    enum Row { Equal, Lower, Upper };
+
 public:
     DistanceJoint(RigidBody* a, RigidBody* b, const JointFrame& fa, const JointFrame& fb, Real length)
         : JointObject(JOINT_Distance, a, b, fa, fb), m_min(length), m_max(length) {

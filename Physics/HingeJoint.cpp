@@ -16,13 +16,13 @@ namespace physics {
 
 namespace {
 
-enum Row { AcrossY, AcrossZ, Lower, Upper, Motor };
-
-Vec3 angularVelocity(const RigidBody* body) {
+Vec3 hingeBodySpin(const RigidBody* body) {
     return body ? toEigen(body->getDynamics().attachmentRoot()->angularVelocity) : Vec3::Zero();
 }
 
 class HingeJoint final : public JointObject<iHingeJoint> {
+    enum Row { AcrossY, AcrossZ, Lower, Upper, Motor };
+
 public:
     HingeJoint(RigidBody* a, RigidBody* b, const JointFrame& fa, const JointFrame& fb)
         : JointObject(JOINT_Hinge, a, b, fa, fb) {
@@ -59,7 +59,7 @@ public:
     float getSpeed() const override {
         JointFrame a, b;
         worldFrames(a, b);
-        return float((angularVelocity(bodyB()) - angularVelocity(bodyA())).dot(a.basis * Vec3::UnitX()));
+        return float((hingeBodySpin(bodyB()) - hingeBodySpin(bodyA())).dot(a.basis * Vec3::UnitX()));
     }
 
     void solve(SolverBody& a, SolverBody& b, Real h, JointPass pass, const JointSoftness& soft) override {

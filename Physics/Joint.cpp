@@ -14,11 +14,11 @@
 namespace physics {
 
 namespace {
-std::vector<Joint*>& deferredDeletes() {
+std::vector<Joint*>& deferredJointDeletes() {
     static std::vector<Joint*> all;
     return all;
 }
-void leave(RigidBody* body, Joint* joint) {
+void leaveJointList(RigidBody* body, Joint* joint) {
     if (!body) return;
     auto& list = body->joints;
     list.erase(std::remove(list.begin(), list.end(), joint), list.end());
@@ -32,14 +32,14 @@ Joint::Joint(JointType type, RigidBody* a, RigidBody* b, const JointFrame& local
 }
 
 Joint::~Joint() {
-    leave(m_a, this);
-    leave(m_b, this);
+    leaveJointList(m_a, this);
+    leaveJointList(m_b, this);
 }
 
 void Joint::letGo(const RigidBody* body) {
     if (body != m_a && body != m_b) return;
     RigidBody*& held = body == m_a ? m_a : m_b;
-    leave(held, this);
+    leaveJointList(held, this);
     held = nullptr;
     m_letGo = true;
 }
@@ -52,15 +52,15 @@ void Joint::destroy() {
     }
     // The step may hold it (its list of joints, a break event): out of the simulation now, freed later.
     m_deleted = true;
-    leave(m_a, this);
-    leave(m_b, this);
+    leaveJointList(m_a, this);
+    leaveJointList(m_b, this);
     m_a = m_b = nullptr;
-    deferredDeletes().push_back(this);
+    deferredJointDeletes().push_back(this);
 }
 
 void Joint::deleteDeferred() {
     std::vector<Joint*> doomed;
-    doomed.swap(deferredDeletes());
+    doomed.swap(deferredJointDeletes());
     for (Joint* j : doomed) delete j;
 }
 

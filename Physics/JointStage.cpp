@@ -10,10 +10,10 @@
 namespace physics {
 
 namespace {
-const RBDynamics* rootOf(const RigidBody* body) {
+const RBDynamics* jointRoot(const RigidBody* body) {
     return body ? body->getDynamics().attachmentRoot() : nullptr;
 }
-std::pair<const RBDynamics*, const RBDynamics*> ordered(const RBDynamics* a, const RBDynamics* b) {
+std::pair<const RBDynamics*, const RBDynamics*> orderedRoots(const RBDynamics* a, const RBDynamics* b) {
     return std::less<const RBDynamics*>()(a, b) ? std::make_pair(a, b) : std::make_pair(b, a);
 }
 } // namespace
@@ -22,12 +22,14 @@ void ContactSolver::setJoints(const std::vector<Joint*>& joints) {
     m_joints = joints;
     m_noContact.clear();
     for (const Joint* j : m_joints)
-        if (!j->collideConnected) m_noContact.push_back(ordered(rootOf(j->bodyA()), rootOf(j->bodyB())));
+        if (!j->collideConnected)
+            m_noContact.push_back(orderedRoots(jointRoot(j->bodyA()), jointRoot(j->bodyB())));
     std::sort(m_noContact.begin(), m_noContact.end());
 }
 
 bool ContactSolver::joinedWithoutContact(const RBDynamics* a, const RBDynamics* b) const {
-    return !m_noContact.empty() && std::binary_search(m_noContact.begin(), m_noContact.end(), ordered(a, b));
+    return !m_noContact.empty() &&
+           std::binary_search(m_noContact.begin(), m_noContact.end(), orderedRoots(a, b));
 }
 
 void ContactSolver::enterJoints(const SolverBodyAccess& access) {

@@ -11,7 +11,7 @@
 namespace physics {
 
 namespace {
-bool stepping(const RigidBody* b, const PhysicsScene* scene) {
+bool takesPartInStep(const RigidBody* b, const PhysicsScene* scene) {
     return b->scene() == scene && !b->dying() && !b->pendingRemoval;
 }
 } // namespace
@@ -19,9 +19,9 @@ bool stepping(const RigidBody* b, const PhysicsScene* scene) {
 void PhysicsScene::gatherJoints() {
     m_joints.clear();
     for (RigidBody* b : m_bodies) {
-        if (b->joints.empty() || !stepping(b, this)) continue;
+        if (b->joints.empty() || !takesPartInStep(b, this)) continue;
         for (Joint* j : b->joints)
-            if (j->bodyA() == b && j->acting() && (!j->bodyB() || stepping(j->bodyB(), this)))
+            if (j->bodyA() == b && j->acting() && (!j->bodyB() || takesPartInStep(j->bodyB(), this)))
                 m_joints.push_back(j);
     }
 }

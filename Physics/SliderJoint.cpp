@@ -16,15 +16,15 @@ namespace physics {
 
 namespace {
 
-enum Row { AcrossY, AcrossZ, Lower, Upper, Motor };
-
-Vec3 velocityAt(const RigidBody* body, const Vec3& point) {
+Vec3 sliderPointVelocity(const RigidBody* body, const Vec3& point) {
     if (!body) return Vec3::Zero();
     const RBDynamics& root = *body->getDynamics().attachmentRoot();
     return toEigen(root.velocity) + toEigen(root.angularVelocity).cross(point - toEigen(root.position));
 }
 
 class SliderJoint final : public JointObject<iSliderJoint> {
+    enum Row { AcrossY, AcrossZ, Lower, Upper, Motor };
+
 public:
     SliderJoint(RigidBody* a, RigidBody* b, const JointFrame& fa, const JointFrame& fb)
         : JointObject(JOINT_Slider, a, b, fa, fb) {
@@ -60,7 +60,7 @@ public:
     float getSpeed() const override {
         JointFrame a, b;
         worldFrames(a, b);
-        const Vec3 v = velocityAt(bodyB(), b.point) - velocityAt(bodyA(), b.point);
+        const Vec3 v = sliderPointVelocity(bodyB(), b.point) - sliderPointVelocity(bodyA(), b.point);
         return float(v.dot(a.basis * Vec3::UnitX()));
     }
 
