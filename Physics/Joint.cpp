@@ -159,6 +159,26 @@ bool Joint::finish(Real h) {
     return true;
 }
 
+Joint::State Joint::state() const {
+    State s{m_point, m_orientation, {}, m_broken, m_force, m_torque};
+    for (int i = 0; i < kMaxRows; ++i) s.rows[i] = m_rows[i];
+    return s;
+}
+
+void Joint::setState(const State& s) {
+    m_point = s.point;
+    m_orientation = s.orientation;
+    for (int i = 0; i < kMaxRows; ++i) m_rows[i] = s.rows[i];
+    m_broken = s.broken;
+    m_force = s.force;
+    m_torque = s.torque;
+}
+
+void Joint::resetImpulses() {
+    m_point.impulse = m_orientation.impulse = Vec3::Zero();
+    for (int i = 0; i < kMaxRows; ++i) m_rows[i].impulse = 0;
+}
+
 bool jointFrames(const wchar_t* factory, iRigidBody* a, iRigidBody* b, const Vector& anchorA,
                  const Vector& anchorB, const Vector& axis, RigidBody*& bodyA, RigidBody*& bodyB,
                  JointFrame& localA, JointFrame& localB) {

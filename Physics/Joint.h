@@ -21,6 +21,7 @@ enum class JointPass { Velocity, PushOut, Relax };
 
 class Joint {
 public:
+    static constexpr int kMaxRows = 5;
     Joint(JointType type, RigidBody* a, RigidBody* b, const JointFrame& localA, const JointFrame& localB);
     virtual ~Joint(); // leaves its bodies' joint lists
     Joint(const Joint&) = delete;
@@ -51,6 +52,17 @@ public:
     void restore();
     // After the step: the reaction of the last sub-step of length h; true when it broke now.
     bool finish(Real h);
+    // What the next step reads of the last (snapshots): the impulses it warm-starts from, whether it broke.
+    struct State {
+        PointBlock point;
+        OrientationBlock orientation;
+        JointRow rows[kMaxRows];
+        bool broken;
+        Vec3 force, torque;
+    };
+    State state() const;
+    void setState(const State& s);
+    void resetImpulses(); // as a new joint: nothing to warm-start from
 
     // --- iJoint, shared by every kind (JointObject forwards) ---
     iRigidBody* publicBodyA() const;
@@ -69,7 +81,6 @@ protected:
     bool m_usesPoint = false, m_usesOrientation = false;
     PointBlock m_point;
     OrientationBlock m_orientation;
-    static constexpr int kMaxRows = 5;
     JointRow m_rows[kMaxRows];
     int m_rowCount = 0;
     // Frames in each body's own frame (relative to its frame's origin; the world's in world coordinates),
