@@ -63,38 +63,29 @@ public:
         return float(twistAngle(a.basis, b.basis));
     }
 
-    void solve(SolverBody& a, SolverBody& b, Real h, JointPass pass, const JointSoftness& soft) override {
-        const bool push = pass == JointPass::PushOut;
+    void prepare(const SolverBody& a, const SolverBody& b, Real) override {
         const Quat qA = worldBasis(a, m_frameA), qB = worldBasis(b, m_frameB);
         const Vec3 tA = qA * Vec3::UnitX(), tB = qB * Vec3::UnitX();
-        if (m_cone < kBallPi) {
-            Vec3 n = tA.cross(tB);
-            const Real length = n.norm();
-            if (length > Real(1e-6)) {
-                m_rows[Cone].setAngular(a, b, -n / length);
-                m_rows[Cone].solveLimit(a, b, m_cone - ballSwingAngle(qA, qB), h, push, soft);
-            } else {
-                m_rows[Cone].impulse = 0; // the axes aligned: far from any cone
-            }
+        const Vec3 n = tA.cross(tB);
+        const Real length = n.norm();
+        if (m_cone < kBallPi && length > Real(1e-6)) { // aligned axes are far from any cone
+            m_rows[Cone].setAngular(a, b, -n / length);
+            makeLimit(m_rows[Cone], m_cone - ballSwingAngle(qA, qB));
         } else {
-            m_rows[Cone].impulse = 0;
+            m_rows[Cone].off();
         }
         if (m_twistLower > -kBallPi || m_twistUpper < kBallPi) {
             const Real twist = twistAngle(qA, qB);
             const Vec3 t = (tA + tB).normalized();
             m_rows[TwistLower].setAngular(a, b, t);
-            m_rows[TwistLower].solveLimit(a, b, twist - m_twistLower, h, push, soft);
+            makeLimit(m_rows[TwistLower], twist - m_twistLower);
             m_rows[TwistUpper].setAngular(a, b, -t);
-            m_rows[TwistUpper].solveLimit(a, b, m_twistUpper - twist, h, push, soft);
+            makeLimit(m_rows[TwistUpper], m_twistUpper - twist);
         } else {
-            m_rows[TwistLower].impulse = m_rows[TwistUpper].impulse = 0;
+            m_rows[TwistLower].off();
+            m_rows[TwistUpper].off();
         }
-        const Vec3 pA = worldPoint(a, m_frameA), pB = worldPoint(b, m_frameB);
-        m_point.setArms(a, b, pA - a.com, pB - b.com);
-        if (push)
-            m_point.solve(a, b, soft.biasRate * (pB - pA), soft);
-        else
-            m_point.solve(a, b, Vec3::Zero());
+        preparePoint(a, b);
     }
 
 private:

@@ -168,6 +168,7 @@ private:
     // JointStage.cpp
     bool joinedWithoutContact(const RBDynamics* a, const RBDynamics* b) const;
     void enterJoints(const SolverBodyAccess& access);
+    void prepareJoints(Real h);
     void warmStartJoints();
     void solveJoints(Real h, JointPass pass);
     void saveJoints();

@@ -17,20 +17,10 @@ public:
         m_usesPoint = m_usesOrientation = true;
     }
 
-    void solve(SolverBody& a, SolverBody& b, Real, JointPass pass, const JointSoftness& soft) override {
-        const bool push = pass == JointPass::PushOut;
+    void prepare(const SolverBody& a, const SolverBody& b, Real) override {
         m_orientation.setMass(a, b);
-        if (push)
-            m_orientation.solve(
-                a, b, soft.biasRate * rotationError(worldBasis(a, m_frameA), worldBasis(b, m_frameB)), soft);
-        else
-            m_orientation.solve(a, b, Vec3::Zero());
-        const Vec3 pA = worldPoint(a, m_frameA), pB = worldPoint(b, m_frameB);
-        m_point.setArms(a, b, pA - a.com, pB - b.com);
-        if (push)
-            m_point.solve(a, b, soft.biasRate * (pB - pA), soft);
-        else
-            m_point.solve(a, b, Vec3::Zero());
+        m_rotationError = rotationError(worldBasis(a, m_frameA), worldBasis(b, m_frameB));
+        preparePoint(a, b);
     }
 };
 

@@ -45,9 +45,15 @@ public:
     int slotA = -1, slotB = -1; // the two bodies among the solver's (the world's slot for none)
     // At the step's start (the bodies at their starting poses): the frames in the solver bodies' root frames.
     void enter(int a, int b);
+    // The rows at the bodies' poses now: directions, arms, effective masses and errors (each kind's). Once at
+    // the step's start and after each sub-step's move: the relax, the next warm start, velocity pass and push
+    // out all see the same poses.
+    virtual void prepare(const SolverBody& a, const SolverBody& b, Real h) = 0;
+    // The accumulated impulses again, along the prepared rows (none for a kind that does not warm-start).
     void warmStart(SolverBody& a, SolverBody& b);
-    // The geometry at the bodies' current poses (arms, masses, errors), then the rows.
-    virtual void solve(SolverBody& a, SolverBody& b, Real h, JointPass pass, const JointSoftness& soft) = 0;
+    // One sweep of the rows in order, then the orientation and point blocks (what matters most ends exact);
+    // the push out corrects the errors at soft.biasRate (JointRows.h).
+    virtual void solve(SolverBody& a, SolverBody& b, Real h, JointPass pass, const JointSoftness& soft);
     void save();
     void restore();
     // After the step: the reaction of the last sub-step of length h; true when it broke now.
@@ -79,8 +85,12 @@ public:
 protected:
     // The rows a kind uses: warm started, saved, restored and summed into the reaction generically.
     bool m_usesPoint = false, m_usesOrientation = false;
+    bool m_warmStarts = true; // a spring is a force: its impulse is worked out afresh each sub-step
     PointBlock m_point;
     OrientationBlock m_orientation;
+    Vec3 m_pointError = Vec3::Zero(), m_rotationError = Vec3::Zero(); // C of the blocks, as prepared
+    // The point block's arms and mass at the frames' world points now.
+    void preparePoint(const SolverBody& a, const SolverBody& b);
     JointRow m_rows[kMaxRows];
     int m_rowCount = 0;
     // Frames in each body's own frame (relative to its frame's origin; the world's in world coordinates),

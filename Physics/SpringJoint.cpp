@@ -34,6 +34,7 @@ public:
                 Real c)
         : JointObject(JOINT_Spring, a, b, fa, fb), m_rest(rest), m_k(k), m_c(c) {
         m_rowCount = 1;
+        m_warmStarts = false; // a force, worked out afresh each sub-step along the spring as it is now
     }
 
     bool setRestLength(float length) override {
@@ -76,30 +77,31 @@ public:
         return float((b.point - a.point).norm());
     }
 
-    void solve(SolverBody& a, SolverBody& b, Real h, JointPass pass, const JointSoftness&) override {
-        if (pass != JointPass::Velocity) return;
+    void prepare(const SolverBody& a, const SolverBody& b, Real) override {
         const Vec3 pA = worldPoint(a, m_frameA), pB = worldPoint(b, m_frameB);
         const Vec3 d = pB - pA;
         const Real length = d.norm();
         if (length > Real(1e-9)) m_direction = d / length;
         JointRow& row = m_rows[0];
         row.setLinear(a, b, m_direction, pA - a.com, pB - b.com);
+        makeEqual(row, length - m_rest);
         if (m_byFrequency) {
             const Real omega = Real(2 * 3.14159265358979) * m_hertz;
             m_k = row.mass * omega * omega;
             m_c = 2 * row.mass * m_ratio * omega;
         }
-        if (row.mass == 0 || (m_k == 0 && m_c == 0)) {
-            row.impulse = 0;
-            return;
-        }
+    }
+
+    void solve(SolverBody& a, SolverBody& b, Real h, JointPass pass, const JointSoftness&) override {
+        JointRow& row = m_rows[0];
+        if (pass != JointPass::Velocity || row.mass == 0 || (m_k == 0 && m_c == 0)) return;
         const Real inverseMass = 1 / row.mass, wh2 = m_k * inverseMass * h * h;
         const Real theta = std::clamp((wh2 - Real(0.25)) / Real(0.75), Real(0), Real(1));
         const Real e = h * (theta * h * m_k + m_c);
-        // The impulse that gives lambda* from the velocities before any spring impulse this sub-step, with
-        // row.impulse (the warm start) already in them: Cdot0 = Cdot - K lambda_acc.
+        // From the velocities with row.impulse (this sub-step's so far) already in them: Cdot0 = Cdot - K
+        // lambda_acc.
         const Real change =
-            -(h * m_k * (length - m_rest) + e * row.speed(a, b) + row.impulse) / (1 + inverseMass * e);
+            -(h * m_k * row.error + e * row.speed(a, b) + row.impulse) / (1 + inverseMass * e);
         const Real total = std::clamp(row.impulse + change, -m_maxForce * h, m_maxForce * h);
         row.apply(a, b, total - row.impulse);
         row.impulse = total;

@@ -145,3 +145,40 @@ TEST(Spring, TheForceLimitCapsThePull) {
     EXPECT_NEAR(before - o.body->getDynamics().velocity.x, 50.0f / 60.0f, 1e-4f);
     EXPECT_NEAR(o.spring->getReactionForce().length(), 50.0f, 0.01f);
 }
+
+// A chain of 20 stiff springs (2,000 N/m, 1 kg bodies 0.1 m apart) hanging from the world, its last body
+// kicked at 2 m/s: warm-starting each spring along last sub-step's direction made it gain energy until it
+// blew up. If the chain gains no energy, no body can be faster than all of the energy there is in one body:
+// v^2 <= 2 (kinetic + m g (y0 + 2 L)) summed / m, the whole chain fallen through twice its length (checked
+// every step for 20 s); and nothing is reported invalid.
+TEST(Spring, AChainOfStiffSpringsGainsNoEnergy) {
+    ErrorRecorder errors;
+    StepScene s(60);
+    const int n = 20;
+    const float k = 2000.0f, spacing = 0.1f, m = 1.0f, kick = 2.0f;
+    std::vector<iRigidBody*> bodies;
+    std::vector<iSpring*> springs;
+    double budget = 0.5 * m * kick * kick;
+    for (int i = 0; i < n; ++i) {
+        const Vector p(0, -spacing * float(i + 1), 0);
+        bodies.push_back(sphereBody(p, m, 0.02f));
+        budget += m * kG * (p.y + 2 * spacing * n);
+        springs.push_back(i == 0 ? CreateSpring(bodies[0], nullptr, p, Vector(0, 0, 0), spacing, k)
+                                 : CreateSpring(bodies[size_t(i)], bodies[size_t(i) - 1], p,
+                                                bodies[size_t(i) - 1]->getDynamics().position, spacing, k));
+        ASSERT_NE(springs.back(), nullptr);
+    }
+    bodies.back()->getDynamics().velocity = Vector(kick, 0, 0);
+    const double limit = std::sqrt(2 * budget / m);
+    double fastest = 0;
+    s.recorder.fn = [&] {
+        for (const iRigidBody* b : bodies)
+            fastest = std::max(fastest, double(b->getDynamics().velocity.length()));
+    };
+    s.seconds(20);
+    EXPECT_LT(fastest, limit);
+    EXPECT_EQ(errors.count(), 0u);
+    RecordProperty("fastest_over_bound", std::to_string(fastest / limit));
+    for (iSpring* j : springs) j->Delete();
+    for (iRigidBody* b : bodies) b->Delete();
+}
