@@ -140,6 +140,9 @@ void Joint::warmStart(SolverBody& a, SolverBody& b) {
 void Joint::solve(SolverBody& a, SolverBody& b, Real h, JointPass pass, const JointSoftness& soft) {
     const bool push = pass == JointPass::PushOut;
     const JointSoftness rigid;
+    if (m_usesOrientation)
+        m_orientation.solve(a, b, push ? Vec3(soft.biasRate * m_rotationError) : Vec3::Zero(),
+                            push ? soft : rigid);
     for (int i = 0; i < m_rowCount; ++i) {
         JointRow& r = m_rows[i];
         switch (r.kind) {
@@ -156,9 +159,6 @@ void Joint::solve(SolverBody& a, SolverBody& b, Real h, JointPass pass, const Jo
             break;
         }
     }
-    if (m_usesOrientation)
-        m_orientation.solve(a, b, push ? Vec3(soft.biasRate * m_rotationError) : Vec3::Zero(),
-                            push ? soft : rigid);
     if (m_usesPoint)
         m_point.solve(a, b, push ? Vec3(soft.biasRate * m_pointError) : Vec3::Zero(), push ? soft : rigid);
 }

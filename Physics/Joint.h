@@ -51,7 +51,8 @@ public:
     virtual void prepare(const SolverBody& a, const SolverBody& b, Real h) = 0;
     // The accumulated impulses again, along the prepared rows (none for a kind that does not warm-start).
     void warmStart(SolverBody& a, SolverBody& b);
-    // One sweep of the rows in order, then the orientation and point blocks (what matters most ends exact);
+    // One sweep: the orientation block, the rows in order, the point block (what matters most ends exact: a
+    // slider's rows across its axis after its orientation, whose lever arms reach its far anchor);
     // the push out corrects the errors at soft.biasRate (JointRows.h).
     virtual void solve(SolverBody& a, SolverBody& b, Real h, JointPass pass, const JointSoftness& soft);
     void save();
