@@ -25,6 +25,7 @@ set(GUARDIAN_PHYSICS_SOURCES
   SceneLifetime.cpp
   WorldPoseCache.cpp
   RigidBody.cpp
+  Rope.cpp
   SceneDebugDraw.cpp
   SceneSwitches.cpp
   ShockPropagation.cpp)
