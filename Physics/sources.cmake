@@ -28,7 +28,8 @@ set(GUARDIAN_PHYSICS_SOURCES
   Rope.cpp
   SceneDebugDraw.cpp
   SceneSwitches.cpp
-  ShockPropagation.cpp)
+  ShockPropagation.cpp
+  SoftBody.cpp)
 set(GUARDIAN_PHYSICS_HEADERS
   BodyValidation.h
   Composite.h
