@@ -70,7 +70,7 @@ public:
 
     bool pin(bool atStart, iRigidBody* body) override {
         for (iRigidBody* segment : m_segments)
-            if (segment == body) {
+            if (body && segment == body) { // (a deleted segment reads nullptr, the world's pin)
                 error(L"iRope::pin: the body is one of the rope's own segments; refused");
                 return false;
             }

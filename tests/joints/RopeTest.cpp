@@ -15,6 +15,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <string>
 
 using namespace joint_test;
 
@@ -212,6 +213,7 @@ TEST(Rope, ASceneDeletedFirstTakesTheSegmentsAndTheRopeForgetsThem) {
     {
         ErrorRecorder errors;
         EXPECT_FALSE(rope->pin(true, nullptr));
+        EXPECT_NE(ErrorRecorder::last().find(L"deleted"), std::wstring::npos);
         EXPECT_FALSE(rope->addToScene(next));
         EXPECT_EQ(errors.count(), 5u); // the pin, and each of the 4 segments
     }
