@@ -10,7 +10,8 @@
 //    link's top to the bottom of the one above across a 2 cm gap. SpringStiff: the same springs at
 //    2,000 N/m, a chain that gains energy until its states are NaN (errors_per_step: the scene's validation
 //    reports and restores them), kept here as the reproducer;
-//  * 60 steps at 60 Hz untimed, then 600 timed.
+//  * 60 steps at 60 Hz untimed, then 600 timed. BM_Chains/<kind> steps one kind against the free bodies;
+//    BM_AllKinds steps the six kinds and the free bodies in turn (the README's table).
 // Counters: ms per step of each scene; ratio (jointed / free); ns_per_joint_step, the added time per joint
 // and step ((jointed - free) / 200); allocs_per_step (operator new calls inside the timed steps, from this
 // program's counting operator new); errors_per_step (error() reports inside them; a counting handler
@@ -252,6 +253,47 @@ void BM_Chains(benchmark::State& state, Kind kind) {
     state.counters["gap_swinging"] = m[0].gapSwinging;
 }
 
+// Every kind's chains (SpringStiff aside) and the free bodies, the seven stepped in turn: the kinds against
+// each other and against the same bodies unjoined, all in one run. Counters per kind: ns_<kind> (per
+// joint-step, against the free scene), x_<kind> (the kind's scene / the free one).
+void BM_AllKinds(benchmark::State& state) {
+    const Kind kinds[] = {Kind::Ball, Kind::Hinge, Kind::Slider, Kind::Fixed, Kind::Distance, Kind::Spring};
+    const char* names[] = {"ball", "hinge", "slider", "fixed", "distance", "spring"};
+    std::vector<Measured> m;
+    size_t joints = 0;
+    bool ok = true;
+    for (auto _ : state) {
+        state.PauseTiming();
+        std::vector<std::unique_ptr<ChainScene>> owned;
+        for (Kind k : kinds) owned.push_back(std::make_unique<ChainScene>(k, 4));
+        owned.push_back(std::make_unique<ChainScene>(Kind::None, 4));
+        std::vector<ChainScene*> scenes;
+        for (auto& s : owned) scenes.push_back(s.get());
+        state.ResumeTiming();
+        m = alternate(scenes, kWarmup, kSteps);
+        state.PauseTiming();
+        joints = owned[0]->jointCount();
+        ok = true;
+        for (auto& s : owned) ok = ok && s->allFinite();
+        owned.clear();
+        state.ResumeTiming();
+    }
+    const double perStep = 1.0 / double(kSteps), free = m.back().seconds;
+    long allocations = 0;
+    unsigned long errors = 0;
+    for (size_t k = 0; k < 6; ++k) {
+        state.counters[std::string("ns_") + names[k]] =
+            1e9 * (m[k].seconds - free) * perStep / double(joints);
+        state.counters[std::string("x_") + names[k]] = free > 0 ? m[k].seconds / free : 0.0;
+        allocations += m[k].allocations;
+        errors += m[k].errors;
+    }
+    state.counters["ms_free"] = 1e3 * free * perStep;
+    state.counters["allocs_per_step"] = double(allocations + m.back().allocations) * perStep;
+    state.counters["errors_per_step"] = double(errors + m.back().errors) * perStep;
+    state.counters["finite"] = ok ? 1 : 0;
+}
+
 // Hinge chains at 2, 4 and 8 solver iterations and the free bodies, the four stepped in turn.
 void BM_HingeIterations(benchmark::State& state) {
     const int iterations[] = {2, 4, 8};
@@ -304,6 +346,7 @@ BENCHMARK_CAPTURE(BM_Chains, Fixed, Kind::Fixed)->Unit(benchmark::kMillisecond)-
 BENCHMARK_CAPTURE(BM_Chains, Distance, Kind::Distance)->Unit(benchmark::kMillisecond)->Iterations(1);
 BENCHMARK_CAPTURE(BM_Chains, Spring, Kind::Spring)->Unit(benchmark::kMillisecond)->Iterations(1);
 BENCHMARK_CAPTURE(BM_Chains, SpringStiff, Kind::SpringStiff)->Unit(benchmark::kMillisecond)->Iterations(1);
+BENCHMARK(BM_AllKinds)->Unit(benchmark::kMillisecond)->Iterations(1);
 BENCHMARK(BM_HingeIterations)->Unit(benchmark::kMillisecond)->Iterations(1);
 
 BENCHMARK_MAIN();
