@@ -3,7 +3,11 @@
 // a ball hits it (the limit holds, the ball does not pass through the door).
 #include "SceneFixture.h"
 #include "iBallJoint.h"
+#include "iCollisionListener.h"
+#include "iDistanceJoint.h"
 #include "iHingeJoint.h"
+#include "iLifetime.h"
+#include "iPhysicsSceneStats.h"
 
 #include <gtest/gtest.h>
 
@@ -81,4 +85,50 @@ TEST(JointContact, AHingedDoorStoppedByItsLimitWhileABallHitsIt) {
                 limit, 1000 * edgeMoved);
     EXPECT_LT(ball->getDynamics().velocity.z, 10.0f); // the ball was stopped or turned back
     hinge->Delete();
+}
+
+// Seed 000's kill() from a collision listener, with a joint on the killed body: a 0.2 m ball on a 1 m rod
+// from (0, 1.1, 0), let go level with the anchor, swings down into the floor (its lowest centre would be
+// 0.1 m); its listener kills it at the first HitWall. After the next step the ball is out of the scene, the
+// rod has let go of it (inactive, body A nullptr), the ball's pointer held here is still readable, and a
+// second ball hanging from the first by a distance joint falls freely from then on (g per step exactly).
+TEST(JointContact, KillFromAListenerLetsTheJointsGo) {
+    struct Killer final : iCollisionListener {
+        iRigidBody* self = nullptr;
+        int calls = 0;
+        void HitWall(iRigidBody*, Vector, Vector) override {
+            if (calls++ == 0) lifetimeOf(self)->kill();
+        }
+    } killer;
+    SceneFixture s;
+    s.world->ground(0.0f);
+    iRigidBody* ball = s.world->sphere(Vector(1, 1.1f, 0), 0.2f, 1.0f)->getRB();
+    iRigidBody* weight =
+        s.world->sphere(Vector(1, 0.6f, 3), 0.1f, 0.5f)->getRB(); // off to the side, no touch
+    iDistanceJoint* rod = CreateDistanceJoint(ball, nullptr, Vector(1, 1.1f, 0), Vector(0, 1.1f, 0));
+    iDistanceJoint* string = CreateDistanceJoint(weight, ball, Vector(1, 0.6f, 3), Vector(1, 1.1f, 0));
+    ASSERT_NE(rod, nullptr);
+    ASSERT_NE(string, nullptr);
+    killer.self = ball;
+    ball->attachListener(&killer);
+    const size_t bodies = statsOf(s.scene)->getBodyCount();
+    int frames = 0;
+    while (killer.calls == 0 && frames++ < 120) s.steps(1);
+    ASSERT_EQ(killer.calls, 1);
+    EXPECT_GT(frames, 20); // it swung down first (a quarter period of a 1 m pendulum is 0.5 s)
+    s.steps(1);            // the kill takes effect at the end of this step
+    EXPECT_EQ(statsOf(s.scene)->getBodyCount(), bodies - 1);
+    EXPECT_FALSE(lifetimeOf(ball)->isAlive());
+    EXPECT_FALSE(rod->isActive());
+    EXPECT_EQ(rod->getBodyA(), nullptr);
+    EXPECT_FALSE(string->isActive());
+    EXPECT_EQ(string->getBodyA(), weight);
+    EXPECT_EQ(string->getBodyB(), nullptr);
+    EXPECT_TRUE(std::isfinite(ball->getDynamics().position.y)); // still a valid object
+    const float before = weight->getDynamics().velocity.y;
+    s.steps(1);
+    EXPECT_NEAR(weight->getDynamics().velocity.y - before, -9.81f / 60.0f, 1e-4f);
+    ball->detachListener(&killer);
+    string->Delete();
+    rod->Delete();
 }
