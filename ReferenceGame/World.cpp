@@ -7,6 +7,7 @@
 #include "iCPlane.h"
 #include "iCSphere.h"
 #include "iCollisionSpace.h"
+#include "iJoint.h"
 #include "iPhysicsFrame.h"
 #include "iPhysicsScene.h"
 #include "iPhysicsSceneSettings.h"
@@ -22,10 +23,15 @@ World::World(iPhysicsScene* scene, iCollisionSpace* space)
 }
 
 World::~World() {
+    for (iJoint* j : m_joints) j->Delete(); // before their bodies (the other order is safe too)
     for (iCollisionGeometry* g : m_shapes) g->Delete();
     for (iPhysicsFrame* f : m_bodies) f->Delete();
     m_scene->setNewGlobalCollisionSpace(nullptr);
     m_space->Delete();
+}
+
+void World::keep(iJoint* j) {
+    if (j) m_joints.push_back(j);
 }
 
 iPhysicsFrame* World::box(const Vector& centre, const Vector& half, float mass, const Matrix& orientation) {

@@ -13,6 +13,7 @@ class iPhysicsScene;
 class iPhysicsFrame;
 class iCollisionSpace;
 class iCollisionGeometry;
+class iJoint;
 
 class World {
 public:
@@ -21,7 +22,8 @@ public:
     explicit World(iPhysicsScene* scene, iCollisionSpace* space = nullptr);
     World(const World&) = delete;
     World& operator=(const World&) = delete;
-    // Deletes every shape and body it built and its space (the physics scene stays).
+    // Deletes every joint it was given, every shape and body it built and its space (the physics scene
+    // stays).
     ~World();
 
     iPhysicsFrame* box(const Vector& centre, const Vector& halfExtents, float mass,
@@ -30,6 +32,14 @@ public:
     iPhysicsFrame* fixedBox(const Vector& centre, const Vector& halfExtents);
     // A world-space floor: a one-sided plane at height y, no body.
     void ground(float y = 0.0f);
+
+    // Takes a joint between bodies of this world (Create*Joint, CreateSpring) to delete with it; returns it
+    // (nullptr, a factory's refusal, is passed through and not kept).
+    template <class J> J* joint(J* j) {
+        keep(j);
+        return j;
+    }
+    const std::vector<iJoint*>& joints() const { return m_joints; }
 
     iPhysicsScene* scene() const { return m_scene; }
     iCollisionSpace* space() const { return m_space; }
@@ -60,10 +70,12 @@ public:
     float deepestBelow(float y) const; // how far the lowest body centre is below y (0 when none is)
 
 private:
+    void keep(iJoint* j);
     iPhysicsScene* m_scene;
     iCollisionSpace* m_space;
     std::vector<iPhysicsFrame*> m_bodies;
     std::vector<iCollisionGeometry*> m_shapes;
+    std::vector<iJoint*> m_joints;
     std::vector<Shape> m_shapeInfo;                              // m_shapes' descriptions
     std::vector<std::pair<std::string, iPhysicsFrame*>> m_names; // in naming order
 };
