@@ -2,7 +2,8 @@
 // slack but do not stretch, optionally pinned at either end to a body or to the world.
 //
 // The segments have no collision geometry: the game gives them shapes if the rope is to touch things.
-// Delete() deletes the joints and the segments it made.
+// Delete() deletes the joints and the segments it made. A segment deleted by someone else (its scene's
+// Delete(), or the game's) reads as nullptr from then on and is not deleted again.
 #pragma once
 
 #include "iRigidBody.h"

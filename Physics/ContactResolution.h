@@ -48,10 +48,10 @@ public:
     void acceptWrites(const std::vector<SolverBody>& bodies) const;
 
 private:
-    struct Mass {
-        RigidBody* body;
-        Vec3 rootOffset; // root COM - composite COM, root axes
-        Mat3 inertia;    // local, about the composite COM
+    struct Mass { // initialised members: FlatMap's operator[] value-initialises one before it is assigned
+        RigidBody* body = nullptr;
+        Vec3 rootOffset = Vec3::Zero(); // root COM - composite COM, root axes
+        Mat3 inertia = Mat3::Zero();    // local, about the composite COM
     };
     const BodyMap& m_bodies;
     Vec3 m_gravity = Vec3::Zero();

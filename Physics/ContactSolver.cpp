@@ -126,6 +126,7 @@ void ContactSolver::solve(Real dt, const SolverBodyAccess& access) {
     prepare(dt, h);
     orderByLevel();
     splitForces();
+    prepareJoints(h);
     for (int i = 0; i < n; ++i) {
         addForces(1.0f / Real(n));
         warmStart(i == 0);
@@ -138,6 +139,7 @@ void ContactSolver::solve(Real dt, const SolverBodyAccess& access) {
         solveContacts(h, true); // the push out, on top (at the same poses: the gaps just measured)
         moveBodies(h);          // by the velocities plus the push, capped
         restoreVelocities();    // the push out's velocity is not kept
+        prepareJoints(h);       // the joints' rows at the new poses (the next sub-step starts there too)
         solveJoints(h, JointPass::Relax);
         solveContacts(h, false); // relax: the velocities again, at the new poses
     }

@@ -1,4 +1,5 @@
-// ContactSolver.h - resolves one step's contacts: sub-stepped sequential impulses with soft contacts.
+// ContactSolver.h - resolves one step's contacts and joints: sub-stepped sequential impulses with soft
+// contacts.
 //
 // The solve replaces the step's motion of every body it touches (Catto's "soft step", Box2D v3):
 //   build manifolds per geometry pair (up to 4 points; points that came apart by a hair are kept), match each
@@ -17,6 +18,8 @@
 // point) may close its gap within the sub-step and no more (speculative). The resting overlap is the spring's
 // give, load / (effective mass * (2 pi f)^2): 1.2 mm under nine boxes at 4 sub-steps (f = 60 Hz).
 // Sub-steps cost about two sweeps each and are the accuracy knob.
+// Joints (Joint.h, JointStage.cpp) are solved in the same sub-steps, before the contacts in each pass: rigid
+// rows in the velocity and relax passes, their drift corrected in the push out (forgotten with it).
 // References: Catto, "Iterative Dynamics with Temporal Coherence" (GDC 2005), "Solver2D" (2024) and
 // "Soft Step" (Box2D v3); Bullet's persistent manifold (contact breaking threshold).
 #pragma once
@@ -165,6 +168,7 @@ private:
     // JointStage.cpp
     bool joinedWithoutContact(const RBDynamics* a, const RBDynamics* b) const;
     void enterJoints(const SolverBodyAccess& access);
+    void prepareJoints(Real h);
     void warmStartJoints();
     void solveJoints(Real h, JointPass pass);
     void saveJoints();

@@ -40,30 +40,27 @@ public:
         return float((b.point - a.point).norm());
     }
 
-    void solve(SolverBody& a, SolverBody& b, Real h, JointPass pass, const JointSoftness& soft) override {
-        const bool push = pass == JointPass::PushOut;
+    void prepare(const SolverBody& a, const SolverBody& b, Real) override {
         const Vec3 pA = worldPoint(a, m_frameA), pB = worldPoint(b, m_frameB);
         const Vec3 d = pB - pA, rA = pA - a.com, rB = pB - b.com;
         const Real length = d.norm();
         if (length > Real(1e-9)) m_direction = d / length; // else the last direction
         if (m_min == m_max) {
-            m_rows[Lower].impulse = m_rows[Upper].impulse = 0;
+            m_rows[Lower].off();
+            m_rows[Upper].off();
             m_rows[Equal].setLinear(a, b, m_direction, rA, rB);
-            if (push)
-                m_rows[Equal].solve(a, b, soft.biasRate * (length - m_min), soft);
-            else
-                m_rows[Equal].solve(a, b, 0);
+            makeEqual(m_rows[Equal], length - m_min);
             return;
         }
-        m_rows[Equal].impulse = 0;
+        m_rows[Equal].off();
         if (m_min > 0) {
             m_rows[Lower].setLinear(a, b, m_direction, rA, rB);
-            m_rows[Lower].solveLimit(a, b, length - m_min, h, push, soft);
+            makeLimit(m_rows[Lower], length - m_min);
         } else {
-            m_rows[Lower].impulse = 0;
+            m_rows[Lower].off();
         }
         m_rows[Upper].setLinear(a, b, -m_direction, rA, rB);
-        m_rows[Upper].solveLimit(a, b, m_max - length, h, push, soft);
+        makeLimit(m_rows[Upper], m_max - length);
     }
 
 private:

@@ -1,7 +1,7 @@
 // FixedJoint.cpp - a weld: B keeps its pose relative to A (iFixedJoint.h).
 //
 // Rows (JointRows.h): the orientation block (C = the rotation vector from A's frame to B's, Cdot = wB - wA)
-// and the point block (C = pB - pA), the point last.
+// and the point block (C = pB - pA), solved together as one 6x6 block.
 #include "Joint.h"
 
 #include "iFixedJoint.h"
@@ -17,21 +17,46 @@ public:
         m_usesPoint = m_usesOrientation = true;
     }
 
-    void solve(SolverBody& a, SolverBody& b, Real, JointPass pass, const JointSoftness& soft) override {
-        const bool push = pass == JointPass::PushOut;
-        m_orientation.setMass(a, b);
-        if (push)
-            m_orientation.solve(
-                a, b, soft.biasRate * rotationError(worldBasis(a, m_frameA), worldBasis(b, m_frameB)), soft);
-        else
-            m_orientation.solve(a, b, Vec3::Zero());
-        const Vec3 pA = worldPoint(a, m_frameA), pB = worldPoint(b, m_frameB);
-        m_point.setArms(a, b, pA - a.com, pB - b.com);
-        if (push)
-            m_point.solve(a, b, soft.biasRate * (pB - pA), soft);
-        else
-            m_point.solve(a, b, Vec3::Zero());
+    void prepare(const SolverBody& a, const SolverBody& b, Real) override {
+        preparePoint(a, b);
+        m_rotationError = rotationError(worldBasis(a, m_frameA), worldBasis(b, m_frameB));
+        const Mat3 sA = cross(m_point.rA), sB = cross(m_point.rB);
+        Mat6 k;
+        k.topLeftCorner<3, 3>() =
+            (a.invMass + b.invMass) * Mat3::Identity() - sA * a.invInertia * sA - sB * b.invInertia * sB;
+        k.topRightCorner<3, 3>() = -(sA * a.invInertia + sB * b.invInertia);
+        k.bottomLeftCorner<3, 3>() = a.invInertia * sA + b.invInertia * sB;
+        k.bottomRightCorner<3, 3>() = a.invInertia + b.invInertia;
+        m_movable = k.determinant() != 0; // else both immovable
+        if (m_movable) m_mass = k.inverse();
     }
+
+    // The six rows as one block (K is 6x6): one block after the other, the point and the orientation fought
+    // wherever the anchor is far from the centre of mass against the body's size (a 2 kg box welded 1 m to
+    // the side sagged 1.1 cm and its reaction read 0.96 m g: FixedCantilever).
+    void solve(SolverBody& a, SolverBody& b, Real, JointPass pass, const JointSoftness& soft) override {
+        if (!m_movable) return;
+        const bool push = pass == JointPass::PushOut;
+        Vec6 speed, impulse;
+        speed << m_point.speed(a, b), b.w - a.w;
+        if (push) {
+            speed.head<3>() += soft.biasRate * m_pointError;
+            speed.tail<3>() += soft.biasRate * m_rotationError;
+        }
+        impulse << m_point.impulse, m_orientation.impulse;
+        const Real massScale = push ? soft.massScale : 1, impulseScale = push ? soft.impulseScale : 0;
+        const Vec6 change = -massScale * Vec6(m_mass * speed) - impulseScale * impulse;
+        m_point.apply(a, b, change.head<3>());
+        m_orientation.apply(a, b, change.tail<3>());
+        m_point.impulse += change.head<3>();
+        m_orientation.impulse += change.tail<3>();
+    }
+
+private:
+    using Vec6 = Eigen::Matrix<Real, 6, 1>;
+    using Mat6 = Eigen::Matrix<Real, 6, 6>;
+    Mat6 m_mass = Mat6::Zero();
+    bool m_movable = false;
 };
 
 } // namespace

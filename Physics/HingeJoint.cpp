@@ -4,6 +4,7 @@
 // across A's axis (C_i = (aA x aB) . p_i, Cdot_i = (wB - wA) . p_i); the limits, one-sided rows on the angle
 // theta (the twist of B's frame in A's, Cdot = (wB - wA) . aA); the motor, Cdot = speed with |lambda| <=
 // maxTorque h. Solved motor and limits first, the point last (what matters most ends the sweep exact).
+// This file prepares the rows; Joint::solve solves them.
 #include "Joint.h"
 
 #include "RigidBody.h"
@@ -21,7 +22,7 @@ Vec3 hingeBodySpin(const RigidBody* body) {
 }
 
 class HingeJoint final : public JointObject<iHingeJoint> {
-    enum Row { AcrossY, AcrossZ, Lower, Upper, Motor };
+    enum Row { Motor, Lower, Upper, AcrossY, AcrossZ }; // solved in this order, the point last
 
 public:
     HingeJoint(RigidBody* a, RigidBody* b, const JointFrame& fa, const JointFrame& fb)
@@ -62,43 +63,32 @@ public:
         return float((hingeBodySpin(bodyB()) - hingeBodySpin(bodyA())).dot(a.basis * Vec3::UnitX()));
     }
 
-    void solve(SolverBody& a, SolverBody& b, Real h, JointPass pass, const JointSoftness& soft) override {
+    void prepare(const SolverBody& a, const SolverBody& b, Real h) override {
         const Quat qA = worldBasis(a, m_frameA), qB = worldBasis(b, m_frameB);
         const Vec3 axis = qA * Vec3::UnitX();
-        const bool push = pass == JointPass::PushOut;
-        if (m_maxTorque > 0 && !push) {
-            JointRow& motor = m_rows[Motor];
-            motor.setAngular(a, b, axis);
-            motor.lower = -m_maxTorque * h;
-            motor.upper = m_maxTorque * h;
-            motor.solve(a, b, -m_speed);
-        } else if (m_maxTorque == 0) {
-            m_rows[Motor].impulse = 0;
+        if (m_maxTorque > 0) {
+            m_rows[Motor].setAngular(a, b, axis);
+            makeMotor(m_rows[Motor], m_speed, m_maxTorque * h);
+        } else {
+            m_rows[Motor].off();
         }
         if (m_limitsOn) {
             const Real angle = twistAngle(qA, qB);
             m_rows[Lower].setAngular(a, b, axis);
-            m_rows[Lower].solveLimit(a, b, angle - m_lower, h, push, soft);
+            makeLimit(m_rows[Lower], angle - m_lower);
             m_rows[Upper].setAngular(a, b, -axis);
-            m_rows[Upper].solveLimit(a, b, m_upper - angle, h, push, soft);
+            makeLimit(m_rows[Upper], m_upper - angle);
         } else {
-            m_rows[Lower].impulse = m_rows[Upper].impulse = 0;
+            m_rows[Lower].off();
+            m_rows[Upper].off();
         }
         const Vec3 error = axis.cross(qB * Vec3::UnitX());
         for (int i = AcrossY; i <= AcrossZ; ++i) {
             const Vec3 across = qA * (i == AcrossY ? Vec3::UnitY() : Vec3::UnitZ());
             m_rows[i].setAngular(a, b, across);
-            if (push)
-                m_rows[i].solve(a, b, soft.biasRate * error.dot(across), soft);
-            else
-                m_rows[i].solve(a, b, 0);
+            makeEqual(m_rows[i], error.dot(across));
         }
-        const Vec3 pA = worldPoint(a, m_frameA), pB = worldPoint(b, m_frameB);
-        m_point.setArms(a, b, pA - a.com, pB - b.com);
-        if (push)
-            m_point.solve(a, b, soft.biasRate * (pB - pA), soft);
-        else
-            m_point.solve(a, b, Vec3::Zero());
+        preparePoint(a, b);
     }
 
 private:

@@ -117,17 +117,50 @@ void Joint::enter(int a, int b) {
     m_frameB = rootFrame(m_b, m_localB);
 }
 
-// Every sub-step starts from the impulses the last one ended with (the first from last step's), at the
-// poses now.
+void Joint::preparePoint(const SolverBody& a, const SolverBody& b) {
+    const Vec3 pA = worldPoint(a, m_frameA), pB = worldPoint(b, m_frameB);
+    m_point.setArms(a, b, pA - a.com, pB - b.com);
+    m_pointError = pB - pA;
+}
+
+// Every sub-step starts from the impulses the last one ended with (the first from last step's), along the
+// rows prepared at the poses now.
 void Joint::warmStart(SolverBody& a, SolverBody& b) {
-    if (m_usesPoint) {
-        const Vec3 pA = worldPoint(a, m_frameA), pB = worldPoint(b, m_frameB);
-        m_point.setArms(a, b, pA - a.com, pB - b.com);
-        m_point.apply(a, b, m_point.impulse);
+    if (!m_warmStarts) {
+        resetImpulses();
+        return;
     }
+    if (m_usesPoint) m_point.apply(a, b, m_point.impulse);
     if (m_usesOrientation) m_orientation.apply(a, b, m_orientation.impulse);
     for (int i = 0; i < m_rowCount; ++i)
-        if (m_rows[i].impulse != 0) m_rows[i].apply(a, b, m_rows[i].impulse);
+        if (m_rows[i].kind != RowKind::Off && m_rows[i].impulse != 0)
+            m_rows[i].apply(a, b, m_rows[i].impulse);
+}
+
+void Joint::solve(SolverBody& a, SolverBody& b, Real h, JointPass pass, const JointSoftness& soft) {
+    const bool push = pass == JointPass::PushOut;
+    const JointSoftness rigid;
+    if (m_usesOrientation)
+        m_orientation.solve(a, b, push ? Vec3(soft.biasRate * m_rotationError) : Vec3::Zero(),
+                            push ? soft : rigid);
+    for (int i = 0; i < m_rowCount; ++i) {
+        JointRow& r = m_rows[i];
+        switch (r.kind) {
+        case RowKind::Off:
+            break;
+        case RowKind::Motor:
+            if (!push) r.solve(a, b, -r.error);
+            break;
+        case RowKind::Limit:
+            r.solveLimit(a, b, r.error, h, push, soft);
+            break;
+        case RowKind::Equal:
+            r.solve(a, b, push ? soft.biasRate * r.error : 0, push ? soft : rigid);
+            break;
+        }
+    }
+    if (m_usesPoint)
+        m_point.solve(a, b, push ? Vec3(soft.biasRate * m_pointError) : Vec3::Zero(), push ? soft : rigid);
 }
 
 void Joint::save() {
@@ -147,6 +180,7 @@ bool Joint::finish(Real h) {
     Vec3 angular = m_usesOrientation ? m_orientation.impulse : Vec3::Zero();
     for (int i = 0; i < m_rowCount; ++i) {
         const JointRow& r = m_rows[i];
+        if (r.kind == RowKind::Off) continue;
         if (r.n.squaredNorm() > 0)
             linear += r.impulse * r.n;
         else
@@ -157,6 +191,26 @@ bool Joint::finish(Real h) {
     if (m_broken || !(m_force.norm() > m_breakForce || m_torque.norm() > m_breakTorque)) return false;
     m_broken = true;
     return true;
+}
+
+Joint::State Joint::state() const {
+    State s{m_point, m_orientation, {}, m_broken, m_force, m_torque};
+    for (int i = 0; i < kMaxRows; ++i) s.rows[i] = m_rows[i];
+    return s;
+}
+
+void Joint::setState(const State& s) {
+    m_point = s.point;
+    m_orientation = s.orientation;
+    for (int i = 0; i < kMaxRows; ++i) m_rows[i] = s.rows[i];
+    m_broken = s.broken;
+    m_force = s.force;
+    m_torque = s.torque;
+}
+
+void Joint::resetImpulses() {
+    m_point.impulse = m_orientation.impulse = Vec3::Zero();
+    for (int i = 0; i < kMaxRows; ++i) m_rows[i].impulse = 0;
 }
 
 bool jointFrames(const wchar_t* factory, iRigidBody* a, iRigidBody* b, const Vector& anchorA,

@@ -21,6 +21,7 @@ enum class JointPass { Velocity, PushOut, Relax };
 
 class Joint {
 public:
+    static constexpr int kMaxRows = 5;
     Joint(JointType type, RigidBody* a, RigidBody* b, const JointFrame& localA, const JointFrame& localB);
     virtual ~Joint(); // leaves its bodies' joint lists
     Joint(const Joint&) = delete;
@@ -44,13 +45,31 @@ public:
     int slotA = -1, slotB = -1; // the two bodies among the solver's (the world's slot for none)
     // At the step's start (the bodies at their starting poses): the frames in the solver bodies' root frames.
     void enter(int a, int b);
+    // The rows at the bodies' poses now: directions, arms, effective masses and errors (each kind's). Once at
+    // the step's start and after each sub-step's move: the relax, the next warm start, velocity pass and push
+    // out all see the same poses.
+    virtual void prepare(const SolverBody& a, const SolverBody& b, Real h) = 0;
+    // The accumulated impulses again, along the prepared rows (none for a kind that does not warm-start).
     void warmStart(SolverBody& a, SolverBody& b);
-    // The geometry at the bodies' current poses (arms, masses, errors), then the rows.
-    virtual void solve(SolverBody& a, SolverBody& b, Real h, JointPass pass, const JointSoftness& soft) = 0;
+    // One sweep: the orientation block, the rows in order, the point block (what matters most ends exact: a
+    // slider's rows across its axis after its orientation, whose lever arms reach its far anchor);
+    // the push out corrects the errors at soft.biasRate (JointRows.h).
+    virtual void solve(SolverBody& a, SolverBody& b, Real h, JointPass pass, const JointSoftness& soft);
     void save();
     void restore();
     // After the step: the reaction of the last sub-step of length h; true when it broke now.
     bool finish(Real h);
+    // What the next step reads of the last (snapshots): the impulses it warm-starts from, whether it broke.
+    struct State {
+        PointBlock point;
+        OrientationBlock orientation;
+        JointRow rows[kMaxRows];
+        bool broken;
+        Vec3 force, torque;
+    };
+    State state() const;
+    void setState(const State& s);
+    void resetImpulses(); // as a new joint: nothing to warm-start from
 
     // --- iJoint, shared by every kind (JointObject forwards) ---
     iRigidBody* publicBodyA() const;
@@ -67,9 +86,12 @@ public:
 protected:
     // The rows a kind uses: warm started, saved, restored and summed into the reaction generically.
     bool m_usesPoint = false, m_usesOrientation = false;
+    bool m_warmStarts = true; // a spring is a force: its impulse is worked out afresh each sub-step
     PointBlock m_point;
     OrientationBlock m_orientation;
-    static constexpr int kMaxRows = 5;
+    Vec3 m_pointError = Vec3::Zero(), m_rotationError = Vec3::Zero(); // C of the blocks, as prepared
+    // The point block's arms and mass at the frames' world points now.
+    void preparePoint(const SolverBody& a, const SolverBody& b);
     JointRow m_rows[kMaxRows];
     int m_rowCount = 0;
     // Frames in each body's own frame (relative to its frame's origin; the world's in world coordinates),

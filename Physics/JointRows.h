@@ -43,12 +43,22 @@ inline Mat3 cross(const Vec3& v) {
     return m;
 }
 
+// What a row does with its error (set by its joint's prepare): nothing; hold C = error at 0; keep a gap =
+// error >= 0 (a limit); drive Cdot to a target speed = error within [lower, upper] (a motor).
+enum class RowKind : unsigned char { Off, Equal, Limit, Motor };
+
 struct JointRow {
+    RowKind kind = RowKind::Off;
+    Real error = 0;
     Vec3 n = Vec3::Zero(), armA = Vec3::Zero(), armB = Vec3::Zero();
     Real mass = 0;
     Real impulse = 0, saved = 0; // accumulated this sub-step; before the push out
     Real lower = -std::numeric_limits<Real>::infinity(), upper = std::numeric_limits<Real>::infinity();
 
+    void off() {
+        kind = RowKind::Off;
+        impulse = 0;
+    }
     // A linear row along n between world points with arms rA, rB from the centres of mass.
     void setLinear(const SolverBody& a, const SolverBody& b, const Vec3& dir, const Vec3& rA,
                    const Vec3& rB) {
@@ -87,8 +97,6 @@ struct JointRow {
     // A one-sided limit whose gap (>= 0: that far from the limit) shrinks as Cdot < 0: the gap may close
     // within the sub-step (speculative); past the limit, the push-out pass corrects it softly.
     void solveLimit(SolverBody& a, SolverBody& b, Real gap, Real h, bool useBias, const JointSoftness& s) {
-        lower = 0;
-        upper = std::numeric_limits<Real>::infinity();
         if (gap > 0)
             solve(a, b, gap / h);
         else if (useBias)
@@ -97,6 +105,26 @@ struct JointRow {
             solve(a, b, 0);
     }
 };
+
+// A one-sided limit row: its impulse only pushes (gap >= 0 kept).
+inline void makeLimit(JointRow& r, Real gap) {
+    r.kind = RowKind::Limit;
+    r.error = gap;
+    r.lower = 0;
+    r.upper = std::numeric_limits<Real>::infinity();
+}
+inline void makeEqual(JointRow& r, Real c) {
+    r.kind = RowKind::Equal;
+    r.error = c;
+    r.lower = -std::numeric_limits<Real>::infinity();
+    r.upper = std::numeric_limits<Real>::infinity();
+}
+inline void makeMotor(JointRow& r, Real speed, Real maxImpulse) {
+    r.kind = RowKind::Motor;
+    r.error = speed;
+    r.lower = -maxImpulse;
+    r.upper = maxImpulse;
+}
 
 // The anchors pB and pA together: C = pB - pA, Cdot = vB + wB x rB - vA - wA x rA.
 struct PointBlock {

@@ -44,6 +44,10 @@ void ContactSolver::enterJoints(const SolverBodyAccess& access) {
     }
 }
 
+void ContactSolver::prepareJoints(Real h) {
+    for (Joint* j : m_solvedJoints) j->prepare(m_bodies[size_t(j->slotA)], m_bodies[size_t(j->slotB)], h);
+}
+
 void ContactSolver::warmStartJoints() {
     for (Joint* j : m_solvedJoints) j->warmStart(m_bodies[size_t(j->slotA)], m_bodies[size_t(j->slotB)]);
 }

@@ -1,17 +1,27 @@
 // SceneSnapshot.cpp - a scene's whole state saved and put back (iSnapshots.h): each body's dynamics and
 // bookkeeping, the solver's memory (last step's manifolds and impulses), the islands' memory of moving
-// outsiders, the fixed-step clock, and its collision space's own snapshot. The next steps after a restore
-// are bit-identical to those after the snapshot (ctest Snapshot.*).
+// outsiders, the joints' impulses, the fixed-step clock, and its collision space's own snapshot. The next
+// steps after a restore are bit-identical to those after the snapshot (ctest Snapshot.*).
 #include "PhysicsScene.h"
+
+#include "Joint.h"
 
 #include "RigidBody.h"
 #include "iFrame.h"
 #include "iSnapshots.h"
 #include "iUtilities.h"
 
+#include <algorithm>
+#include <functional>
+
 namespace physics {
 
 namespace {
+
+using SavedJoint = std::pair<const Joint*, Joint::State>;
+bool jointFirst(const SavedJoint& a, const SavedJoint& b) {
+    return std::less<const Joint*>()(a.first, b.first);
+}
 
 class SceneSnapshot final : public iSnapshot {
 public:
@@ -33,6 +43,7 @@ public:
     int lastNow = 0;
     bool hasTimeBase = false;
     long long steps = 0, dropped = 0;
+    std::vector<SavedJoint> joints; // the joints whose body A is in the scene, by address
 };
 
 } // namespace
@@ -115,6 +126,10 @@ iSnapshot* PhysicsScene::takeSnapshot() const {
     s->hasTimeBase = m_hasTimeBase;
     s->steps = m_steps;
     s->dropped = m_dropped;
+    for (const RigidBody* b : m_bodies)
+        for (const Joint* j : b->joints)
+            if (j->bodyA() == b) s->joints.emplace_back(j, j->state());
+    std::sort(s->joints.begin(), s->joints.end(), jointFirst);
     return s;
 }
 
@@ -149,6 +164,15 @@ bool PhysicsScene::restoreSnapshot(const iSnapshot* snapshot) {
     m_hasTimeBase = s->hasTimeBase;
     m_steps = s->steps;
     m_dropped = s->dropped;
+    // Joints made since start from nothing; those deleted since are not looked for (only live ones are).
+    for (RigidBody* b : m_bodies)
+        for (Joint* j : b->joints) {
+            if (j->bodyA() != b) continue;
+            j->resetImpulses();
+            const SavedJoint key{j, Joint::State{}};
+            auto saved = std::lower_bound(s->joints.begin(), s->joints.end(), key, jointFirst);
+            if (saved != s->joints.end() && saved->first == j) j->setState(saved->second);
+        }
     writeFrames(float(m_accumulator) / 1000.0f);
     return true;
 }

@@ -23,7 +23,7 @@ Vec3 sliderPointVelocity(const RigidBody* body, const Vec3& point) {
 }
 
 class SliderJoint final : public JointObject<iSliderJoint> {
-    enum Row { AcrossY, AcrossZ, Lower, Upper, Motor };
+    enum Row { Motor, Lower, Upper, AcrossY, AcrossZ }; // solved in this order, then the orientation
 
 public:
     SliderJoint(RigidBody* a, RigidBody* b, const JointFrame& fa, const JointFrame& fb)
@@ -64,43 +64,34 @@ public:
         return float(v.dot(a.basis * Vec3::UnitX()));
     }
 
-    void solve(SolverBody& a, SolverBody& b, Real h, JointPass pass, const JointSoftness& soft) override {
-        const bool push = pass == JointPass::PushOut;
+    void prepare(const SolverBody& a, const SolverBody& b, Real h) override {
         const Quat qA = worldBasis(a, m_frameA);
         const Vec3 axis = qA * Vec3::UnitX();
         const Vec3 pA = worldPoint(a, m_frameA), pB = worldPoint(b, m_frameB);
         const Vec3 d = pB - pA, rA = pA - a.com + d, rB = pB - b.com;
-        if (m_maxForce > 0 && !push) {
-            JointRow& motor = m_rows[Motor];
-            motor.setLinear(a, b, axis, rA, rB);
-            motor.lower = -m_maxForce * h;
-            motor.upper = m_maxForce * h;
-            motor.solve(a, b, -m_speed);
-        } else if (m_maxForce == 0) {
-            m_rows[Motor].impulse = 0;
+        if (m_maxForce > 0) {
+            m_rows[Motor].setLinear(a, b, axis, rA, rB);
+            makeMotor(m_rows[Motor], m_speed, m_maxForce * h);
+        } else {
+            m_rows[Motor].off();
         }
         if (m_limitsOn) {
             const Real travel = d.dot(axis);
             m_rows[Lower].setLinear(a, b, axis, rA, rB);
-            m_rows[Lower].solveLimit(a, b, travel - m_lower, h, push, soft);
+            makeLimit(m_rows[Lower], travel - m_lower);
             m_rows[Upper].setLinear(a, b, -axis, rA, rB);
-            m_rows[Upper].solveLimit(a, b, m_upper - travel, h, push, soft);
+            makeLimit(m_rows[Upper], m_upper - travel);
         } else {
-            m_rows[Lower].impulse = m_rows[Upper].impulse = 0;
+            m_rows[Lower].off();
+            m_rows[Upper].off();
         }
-        m_orientation.setMass(a, b);
-        if (push)
-            m_orientation.solve(a, b, soft.biasRate * rotationError(qA, worldBasis(b, m_frameB)), soft);
-        else
-            m_orientation.solve(a, b, Vec3::Zero());
         for (int i = AcrossY; i <= AcrossZ; ++i) {
             const Vec3 across = qA * (i == AcrossY ? Vec3::UnitY() : Vec3::UnitZ());
             m_rows[i].setLinear(a, b, across, rA, rB);
-            if (push)
-                m_rows[i].solve(a, b, soft.biasRate * d.dot(across), soft);
-            else
-                m_rows[i].solve(a, b, 0);
+            makeEqual(m_rows[i], d.dot(across));
         }
+        m_orientation.setMass(a, b);
+        m_rotationError = rotationError(qA, worldBasis(b, m_frameB));
     }
 
 private:

@@ -25,9 +25,11 @@ set(GUARDIAN_PHYSICS_SOURCES
   SceneLifetime.cpp
   WorldPoseCache.cpp
   RigidBody.cpp
+  Rope.cpp
   SceneDebugDraw.cpp
   SceneSwitches.cpp
-  ShockPropagation.cpp)
+  ShockPropagation.cpp
+  SoftBody.cpp)
 set(GUARDIAN_PHYSICS_HEADERS
   BodyValidation.h
   Composite.h

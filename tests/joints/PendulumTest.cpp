@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <string>
 #include <vector>
 
 using namespace joint_test;
@@ -25,6 +26,7 @@ TEST(Pendulum, TheSmallAnglePeriodIsTwoPiRootLOverG) {
         s.seconds(10);
         const double period = meanPeriod(x, 1.0 / hz), truth = 2 * M_PI * std::sqrt(L / kG);
         EXPECT_NEAR(period / truth, 1.0, 0.02) << hz << " Hz: " << period << " s";
+        RecordProperty("period_over_truth_" + std::to_string(hz) + "Hz", std::to_string(period / truth));
         // the rod neither stretches nor shortens
         EXPECT_NEAR(rod->getLength(), L, 0.001f * L);
         rod->Delete();
@@ -64,6 +66,7 @@ TEST(HingeChain, TwentyLinksHangWithUnderOnePercentStretch) {
         };
         s.seconds(5);
         EXPECT_LT(worst, 0.01f) << "kick " << kick << ": stretch " << worst * 100 << " %";
+        RecordProperty(kick > 0 ? "stretch_swinging" : "stretch_hanging", std::to_string(worst));
         for (iHingeJoint* j : hinge) j->Delete();
         for (iRigidBody* b : body) b->Delete();
     }
