@@ -11,8 +11,11 @@
 #include "iPhysicsScene.h"
 #include "iPhysicsSceneSettings.h"
 #include "iRigidBody.h"
+#include "iRope.h"
+#include "iSoftBody.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 namespace {
@@ -203,6 +206,83 @@ void buildRagdoll(World& world) {
     hinge(LowerLegR, UpperLegR, Vector(0.1f, 0.43f, 0), Vector(-1, 0, 0));
 }
 
+void buildRopeBridge(World& world) {
+    world.ground();
+    const int segments = 30, links = segments - 1;
+    const float span = 6.0f, height = 2.0f, length = 1.05f * span;
+    iRope* rope =
+        CreateRope(Vector(-0.5f * length, height, 0), Vector(0.5f * length, height, 0), segments, 0.2f);
+    if (!rope) return;
+    // Laid out hanging, not straight (a rope cannot sag between its pins without stretching), on the circular
+    // arc through the pins whose equal chords are the links: at rest but for the arc not being a catenary.
+    // The arc's half angle a: each link subtends 2a / links, radius link / (2 sin(a / links)), and the pins
+    // are 2 r sin a = span apart; by bisection (the span shrinks as a grows).
+    const float link = length / float(links);
+    auto radius = [&](float a) { return link / (2 * std::sin(a / float(links))); };
+    float lo = 1e-4f, hi = 1.5f;
+    for (int i = 0; i < 60; ++i) {
+        const float mid = 0.5f * (lo + hi);
+        (2 * radius(mid) * std::sin(mid) > span ? lo : hi) = mid;
+    }
+    const float a = lo, r = radius(a);
+    const Vector centre(0, height + r * std::cos(a), 0);
+    for (int i = 0; i < segments; ++i) { // a written position is a teleport: never swept
+        const float angle = -a + 2 * a * float(i) / float(links);
+        rope->getSegments()[i]->getDynamics().position =
+            centre + Vector(std::sin(angle), -std::cos(angle), 0) * r;
+    }
+    // A sphere of 0.1 m on each segment (0.217 m apart): the box cannot slip between them; neighbours,
+    // joined, do not collide.
+    world.rope(rope, 0.1f);
+    rope->pin(true, nullptr);
+    rope->pin(false, nullptr);
+}
+
+void dropOnBridge(World& world, int frame) {
+    // Onto the middle of the hanging rope (0.84 m below its pins), from 0.6 m above it.
+    if (frame == kBridgeDropFrame)
+        world.name(world.box(Vector(0, 1.9f, 0), Vector(0.25f, 0.15f, 0.25f), 2.0f), "box");
+}
+
+void buildCloth(World& world) {
+    world.ground();
+    iPhysicsFrame* ball = world.name(world.sphere(Vector(0, 1.0f, 0), 0.5f, 1.0f), "sphere");
+    ball->getDynamics()->physicsType = PHYS_FixedInSpace;
+    // 10 x 10 bodies 0.15 m apart, level, 0.4 m above the sphere's top. Each has a sphere of 0.4 times the
+    // spacing: bodies no spring joins collide, so the cloth does not pass through itself where it folds.
+    constexpr int n = 10;
+    const float spacing = 0.15f, half = 0.5f * spacing * float(n - 1);
+    std::array<bool, n * n> mask;
+    mask.fill(true);
+    iSoftBody* cloth =
+        world.softBody(CreateSoftBody(mask.data(), n, n, Vector(-half, 1.9f, -half), Vector(spacing, 0, 0),
+                                      Vector(0, 0, spacing), 0.02f, 200.0f, 0.2f),
+                       0.4f * spacing);
+    // Cloth does not roll: its bodies' turning is locked (a zero inverse inertia), so that they slide on the
+    // sphere under friction instead of rolling off it like ball bearings.
+    for (int i = 0; cloth && i < cloth->getBodyCount(); ++i)
+        cloth->getBody(i)->getDynamics().setInverseInertiaTensor(Matrix(0.0f));
+}
+
+void buildSoftBlob(World& world) {
+    world.ground();
+    // A disc of 11 places across (0.8 m), tilted 30 degrees from level about x, its lowest body 0.5 m above
+    // the floor: it lands on its edge and flops flat (upright, it would roll away like a wheel).
+    constexpr int n = 11;
+    const float spacing = 0.08f, centre = 0.5f * float(n - 1), tilt = 0.5236f;
+    std::array<bool, n * n> mask;
+    for (int r = 0; r < n; ++r)
+        for (int c = 0; c < n; ++c) {
+            const float dc = float(c) - centre, dr = float(r) - centre;
+            mask[size_t(r * n + c)] = dc * dc + dr * dr <= (centre + 0.2f) * (centre + 0.2f);
+        }
+    // Jelly: well damped (each spring at about half its critical damping, 2 sqrt(k m) = 20 N s/m).
+    const Vector across(spacing, 0, 0), up(0, spacing * std::sin(tilt), spacing * std::cos(tilt));
+    world.softBody(CreateSoftBody(mask.data(), n, n, Vector(-centre * spacing, 0.5f, -centre * up.z), across,
+                                  up, 0.05f, 2000.0f, 10.0f),
+                   0.5f * spacing);
+}
+
 void addJointScenes(std::deque<SceneSpec>& scenes) {
     const SceneSpec joints[] = {
         {"cradle-strings", "Newton's cradle of 5 balls on strings, 1 released (named: cue, last)",
@@ -217,6 +297,10 @@ void addJointScenes(std::deque<SceneSpec>& scenes) {
          throwAtDoor},
         {"ragdoll", "a ragdoll of 10 boxes on ball joints and hinges dropped (named: torso, head)",
          buildRagdoll, nullptr},
+        {"rope-bridge", "a rope pinned at both ends, a box dropped on it (named: box)", buildRopeBridge,
+         dropOnBridge},
+        {"cloth", "a soft body cloth dropped on a fixed sphere (named: sphere)", buildCloth, nullptr},
+        {"soft-blob", "a round soft body dropped tilted on the floor", buildSoftBlob, nullptr},
     };
     for (const SceneSpec& s : joints) scenes.push_back(s);
 }

@@ -1,7 +1,7 @@
 // JointScenes.h - the demo scenes built with joints (a cradle on strings, a hinge chain, a motorised door,
-// a ragdoll), registered with the built-in scenes (Scenes.cpp) and used by the game tests. Sizes in metres,
-// masses in kilograms; y is up and the floor is at y = 0. The World keeps every joint made here and deletes
-// it with the scene.
+// a ragdoll, a rope bridge, cloth, a soft blob), registered with the built-in scenes (Scenes.cpp) and used by
+// the game tests. Sizes in metres, masses in kilograms; y is up and the floor is at y = 0. The World keeps
+// every joint, rope and soft body made here and deletes it with the scene.
 #pragma once
 
 #include "Scenes.h"
@@ -31,6 +31,19 @@ const int kDoorThrowFrame = 150;
 // cone and twist limits) and hinges (elbows, knees: limits), dropped tilted onto the floor. Named: torso,
 // head.
 void buildRagdoll(World& world);
+
+// A rope (iRope) of 30 segments, 6.3 m long, hanging between two pins to the world 6 m apart; at frame
+// kBridgeDropFrame a box is dropped on its middle. Named: box.
+void buildRopeBridge(World& world);
+void dropOnBridge(World& world, int frame); // the rope bridge's act
+const int kBridgeDropFrame = 60;
+
+// A soft body (iSoftBody, a full 10 x 10 mask) level above a fixed sphere, dropped on it to drape. Named:
+// sphere.
+void buildCloth(World& world);
+
+// A soft body from a round mask (a disc of 0.8 m) dropped tilted on the floor.
+void buildSoftBlob(World& world);
 
 // Appends the joint scenes to the built-in list (Scenes.cpp's registry).
 void addJointScenes(std::deque<SceneSpec>& scenes);
