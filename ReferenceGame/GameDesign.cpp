@@ -47,7 +47,7 @@ void GameDesign::initialize(int now) {
     m_energyBudget = m_world->mechanicalEnergy();
     m_wallStart = std::chrono::steady_clock::now();
     std::fprintf(m_options.out, "scene %s: %s; %zu bodies\n", m_spec.name, m_spec.description,
-                 m_world->bodies().size());
+                 m_world->bodies().size() + m_world->parts().size()); // a rope's or soft body's too
     m_tracker.resolve(*m_world, m_options.track, m_spec.name, m_options.err);
     if (m_recording) { // the scene as built: frame 0
         m_recording->begin(*m_world, m_spec.name);
@@ -110,6 +110,8 @@ GameSample GameDesign::measure(int now, float penetration) const {
     s.bodies = stats->getBodyCount();
     for (const iPhysicsFrame* f : m_world->bodies())
         s.moving += f->getDynamics()->physicsType != PHYS_FixedInSpace;
+    for (const World::Part& p : m_world->parts())
+        s.moving += p.body->getDynamics().physicsType != PHYS_FixedInSpace;
     s.contacts = m_world->space()->getNumContacts();
     s.overlap = penetration;
     s.worstOverlap = m_worstPenetration;

@@ -1,6 +1,7 @@
 // Scenes.cpp - the demo scenes. Sizes in metres, masses in kilograms; y is up and the floor is at y = 0.
 #include "Scenes.h"
 
+#include "JointScenes.h"
 #include "MathDefinitions.h"
 #include "RBDynamics.h"
 #include "World.h"
@@ -134,6 +135,8 @@ static std::deque<SceneSpec>& registry() {
          [](World& w) { buildNewtonsCradle(w, 5); }, nullptr},
         {"shooting", "spheres shot into a wall of 40 boxes (named: corner)", buildShootingGallery, act},
     };
+    static const bool withJoints = (addJointScenes(scenes), true); // JointScenes.cpp, once, after these
+    (void)withJoints;
     return scenes;
 }
 

@@ -7,11 +7,14 @@
 #include "iCPlane.h"
 #include "iCSphere.h"
 #include "iCollisionSpace.h"
+#include "iJoint.h"
 #include "iPhysicsFrame.h"
 #include "iPhysicsScene.h"
 #include "iPhysicsSceneSettings.h"
 #include "iRigidBody.h"
+#include "iRope.h"
 #include "iSimpleCollisionSpace.h"
+#include "iSoftBody.h"
 
 #include <algorithm>
 #include <cmath>
@@ -23,9 +26,46 @@ World::World(iPhysicsScene* scene, iCollisionSpace* space)
 
 World::~World() {
     for (iCollisionGeometry* g : m_shapes) g->Delete();
+    for (iCollisionGeometry* g : m_partShapes) g->Delete();
+    for (iJoint* j : m_joints) j->Delete(); // before their bodies (the other order is safe too)
+    for (iRope* r : m_ropes) r->Delete();   // its links, pins and segments
+    for (iSoftBody* b : m_softBodies) b->Delete();
     for (iPhysicsFrame* f : m_bodies) f->Delete();
     m_scene->setNewGlobalCollisionSpace(nullptr);
     m_space->Delete();
+}
+
+void World::keep(iJoint* j) {
+    if (j) m_joints.push_back(j);
+}
+
+void World::addPart(iRigidBody* body, float radius) {
+    if (!body) return; // a part the scene deleted
+    m_parts.push_back({body, radius});
+    m_partShapes.push_back(CreateCSphere(body, radius));
+}
+
+iRope* World::rope(iRope* r, float radius) {
+    if (!r) return r;
+    m_ropes.push_back(r);
+    r->addToScene(m_scene);
+    for (int i = 0; i < r->getSegmentCount(); ++i) addPart(r->getSegments()[i], radius);
+    return r;
+}
+
+iSoftBody* World::softBody(iSoftBody* s, float radius) {
+    if (!s) return s;
+    m_softBodies.push_back(s);
+    s->addToScene(m_scene);
+    for (int i = 0; i < s->getBodyCount(); ++i) addPart(s->getBody(i), radius);
+    return s;
+}
+
+std::vector<const RBDynamics*> World::allDynamics() const {
+    std::vector<const RBDynamics*> all;
+    for (const iPhysicsFrame* f : m_bodies) all.push_back(f->getDynamics());
+    for (const Part& p : m_parts) all.push_back(&p.body->getDynamics());
+    return all;
 }
 
 iPhysicsFrame* World::box(const Vector& centre, const Vector& half, float mass, const Matrix& orientation) {
@@ -79,8 +119,7 @@ void World::ground(float y) {
 
 float World::kineticEnergy() const {
     float e = 0;
-    for (const iPhysicsFrame* f : m_bodies) {
-        const RBDynamics* d = f->getDynamics();
+    for (const RBDynamics* d : allDynamics()) {
         if (d->physicsType == PHYS_FixedInSpace || !(d->mass < INFINITE_MASS)) continue;
         e +=
             0.5f * d->mass * d->velocity.lengthSquared() + 0.5f * dot(d->angularVelocity, d->angularMomentum);
@@ -91,8 +130,7 @@ float World::kineticEnergy() const {
 float World::mechanicalEnergy() const {
     float e = kineticEnergy();
     Vector g = settingsOf(m_scene)->getGravity();
-    for (const iPhysicsFrame* f : m_bodies) {
-        const RBDynamics* d = f->getDynamics();
+    for (const RBDynamics* d : allDynamics()) {
         if (d->physicsType != PHYS_Falling || !(d->mass < INFINITE_MASS)) continue;
         e -= d->mass * dot(g, d->position);
     }
@@ -107,8 +145,7 @@ float World::maxPenetration() const {
 }
 
 bool World::allFinite() const {
-    for (const iPhysicsFrame* f : m_bodies) {
-        const RBDynamics* d = f->getDynamics();
+    for (const RBDynamics* d : allDynamics()) {
         if (!d->position.isFinite() || !d->velocity.isFinite() || !d->angularVelocity.isFinite() ||
             !d->orientation.isFinite())
             return false;
@@ -118,6 +155,6 @@ bool World::allFinite() const {
 
 float World::deepestBelow(float y) const {
     float below = 0;
-    for (const iPhysicsFrame* f : m_bodies) below = std::max(below, y - f->getDynamics()->position.y);
+    for (const RBDynamics* d : allDynamics()) below = std::max(below, y - d->position.y);
     return below;
 }

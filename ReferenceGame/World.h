@@ -13,6 +13,11 @@ class iPhysicsScene;
 class iPhysicsFrame;
 class iCollisionSpace;
 class iCollisionGeometry;
+class iJoint;
+class iRigidBody;
+class iRope;
+class iSoftBody;
+struct RBDynamics;
 
 class World {
 public:
@@ -21,7 +26,8 @@ public:
     explicit World(iPhysicsScene* scene, iCollisionSpace* space = nullptr);
     World(const World&) = delete;
     World& operator=(const World&) = delete;
-    // Deletes every shape and body it built and its space (the physics scene stays).
+    // Deletes every joint, rope and soft body it was given, every shape and body it built and its space (the
+    // physics scene stays).
     ~World();
 
     iPhysicsFrame* box(const Vector& centre, const Vector& halfExtents, float mass,
@@ -30,6 +36,27 @@ public:
     iPhysicsFrame* fixedBox(const Vector& centre, const Vector& halfExtents);
     // A world-space floor: a one-sided plane at height y, no body.
     void ground(float y = 0.0f);
+
+    // Takes a joint between bodies of this world (Create*Joint, CreateSpring) to delete with it; returns it
+    // (nullptr, a factory's refusal, is passed through and not kept).
+    template <class J> J* joint(J* j) {
+        keep(j);
+        return j;
+    }
+    const std::vector<iJoint*>& joints() const { return m_joints; }
+    // Takes a rope or soft body (iRope.h, iSoftBody.h) to delete with it, adds its bodies to the scene and
+    // gives each a sphere of radius in this world's space; returns it (nullptr passed through). Its bodies
+    // are no PhysicsFrames: they are parts(), not bodies(); the measurements below count them, shapes() (and
+    // so a recording) leaves them out.
+    iRope* rope(iRope* r, float radius);
+    iSoftBody* softBody(iSoftBody* s, float radius);
+    const std::vector<iRope*>& ropes() const { return m_ropes; }
+    const std::vector<iSoftBody*>& softBodies() const { return m_softBodies; }
+    struct Part {
+        iRigidBody* body;
+        float radius; // its sphere's
+    };
+    const std::vector<Part>& parts() const { return m_parts; }
 
     iPhysicsScene* scene() const { return m_scene; }
     iCollisionSpace* space() const { return m_space; }
@@ -60,10 +87,18 @@ public:
     float deepestBelow(float y) const; // how far the lowest body centre is below y (0 when none is)
 
 private:
+    void keep(iJoint* j);
+    void addPart(iRigidBody* body, float radius);
+    std::vector<const RBDynamics*> allDynamics() const; // bodies' then parts'
     iPhysicsScene* m_scene;
     iCollisionSpace* m_space;
     std::vector<iPhysicsFrame*> m_bodies;
     std::vector<iCollisionGeometry*> m_shapes;
+    std::vector<iJoint*> m_joints;
+    std::vector<iRope*> m_ropes;
+    std::vector<iSoftBody*> m_softBodies;
+    std::vector<Part> m_parts;
+    std::vector<iCollisionGeometry*> m_partShapes;               // the parts' spheres (not in m_shapeInfo)
     std::vector<Shape> m_shapeInfo;                              // m_shapes' descriptions
     std::vector<std::pair<std::string, iPhysicsFrame*>> m_names; // in naming order
 };

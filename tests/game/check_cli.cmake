@@ -86,7 +86,8 @@ endif()
 # --scene all --csv FILE --record FILE: one file each per scene, FILE's name with the scene's joined before
 # .csv and .rec.
 run(rc out err "${GAME}" --scene all --frames 2 --csv "${WORK}/runs.csv" --record "${WORK}/runs.rec")
-foreach(scene tower pyramid ballpit dominoes cradle shooting)
+foreach(scene tower pyramid ballpit dominoes cradle shooting cradle-strings cradle-strings-2 cradle-strings-3
+              hinge-chain door ragdoll rope-bridge cloth soft-blob)
   if(NOT rc EQUAL 0 OR NOT EXISTS "${WORK}/runs-${scene}.csv" OR NOT EXISTS "${WORK}/runs-${scene}.rec")
     message(FATAL_ERROR "ReferenceGame --scene all --csv runs.csv --record runs.rec: exit ${rc}, no "
                         "runs-${scene}.csv or .rec:\n${err}")

@@ -1,0 +1,268 @@
+// JointSceneTest.cpp - the joint scenes (ReferenceGame/JointScenes.h) run as the game runs them, watched
+// every physics step, against what physics says: the cradle on strings sends out as many balls as were
+// released at the speed of the fall, a hinge chain does not stretch, a motorised door stays within its
+// hinge's limits against motor and impact, and a ragdoll comes to rest on the floor with its joints together.
+#include "SceneProbe.h"
+
+#include "JointScenes.h"
+#include "iHingeJoint.h"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+using namespace game_test;
+
+namespace {
+
+float speedOf(const iPhysicsFrame* f) { return length(f->getDynamics()->velocity); }
+float stepOf(const World& w) { return 1.0f / float(settingsOf(w.scene())->getStepRate()); }
+
+// The y of the lowest corner of every box of w (the boxes' own faces, not their centres).
+float lowestBoxCorner(const World& w) {
+    float lowest = 1e9f;
+    for (const World::Shape& s : w.shapes()) {
+        if (s.kind != World::Shape::Box) continue;
+        const RBDynamics& d = *w.bodies()[size_t(s.body)]->getDynamics();
+        for (int c = 0; c < 8; ++c) {
+            const Vector corner(c & 1 ? s.size.x : -s.size.x, c & 2 ? s.size.y : -s.size.y,
+                                c & 4 ? s.size.z : -s.size.z);
+            lowest = std::min(lowest, (d.getWorldOrigin() + corner * d.getWorldOrientation()).y);
+        }
+    }
+    return lowest;
+}
+
+// The cradle on strings with `released` balls let go from the raise h: each reaches the row at sqrt(2 g h)
+// (energy; within 2 %), and in the swing after the impacts exactly the last `released` balls rise beyond
+// the row by more than h / 2 (by energy, a ball leaving at v rises v^2 / 2g: h if the row passes the
+// speed on, at most a quarter of h if it leaves at half of it), while the others stay nearly still.
+void checkCradle(const char* scene, int released) {
+    SCOPED_TRACE(scene);
+    size_t n = 0;
+    float g = 0, h = 0, dt = 0, restY = 0, spacing = 0;
+    std::vector<float> restX, impactSpeed, farRise, stray, straySpeed;
+    long exchange = -1, last = 0;
+    const RunStatus status = runProbed(scene, 120, [&](const World& w, long step) {
+        const auto& b = w.bodies();
+        if (step == 0) {
+            n = b.size();
+            g = gravityOf(w);
+            dt = stepOf(w);
+            // The balls left hanging mark the row: the last two give its rest height and spacing.
+            restY = b[n - 1]->getDynamics()->position.y;
+            spacing = b[n - 1]->getDynamics()->position.x - b[n - 2]->getDynamics()->position.x;
+            h = b[0]->getDynamics()->position.y - restY;
+            for (size_t i = 0; i < n; ++i)
+                restX.push_back(b[n - 1]->getDynamics()->position.x - spacing * float(n - 1 - i));
+            impactSpeed.assign(n, 0);
+            farRise.assign(n, 0);
+            stray.assign(n, 0);
+            straySpeed.assign(n, 0);
+        }
+        last = step;
+        const float v = std::sqrt(2 * g * h);
+        if (exchange < 0) {
+            // The impacts start when a ball of the row moves: until then, the released balls' speeds.
+            for (size_t i = size_t(released); i < n; ++i)
+                if (speedOf(b[i]) > 0.05f * v) exchange = step;
+            if (exchange < 0)
+                for (size_t i = 0; i < size_t(released); ++i) impactSpeed[i] = speedOf(b[i]);
+            return;
+        }
+        // The swing out and back takes half a period (over 1 s for a 1 m string): 0.8 s sees the leaving
+        // balls' peaks before they return. The others are judged from 0.1 s on, once the impacts are done.
+        const float since = float(step - exchange) * dt;
+        if (since > 0.8f) return;
+        for (size_t i = 0; i < n; ++i) {
+            const Vector p = b[i]->getDynamics()->position;
+            if (p.x > restX[i]) farRise[i] = std::max(farRise[i], p.y - restY);
+            if (since > 0.1f) {
+                stray[i] = std::max(stray[i], length(p - Vector(restX[i], restY, p.z)));
+                straySpeed[i] = std::max(straySpeed[i], speedOf(b[i]));
+            }
+        }
+    });
+    ASSERT_EQ(status, RUN_OK);
+    ASSERT_EQ(n, 5u);
+    EXPECT_NEAR(h, kCradleRaise, 1e-4f);
+    ASSERT_GT(exchange, 0);
+    ASSERT_GT(float(last - exchange) * dt, 0.8f); // the run saw the whole window
+    const float v = std::sqrt(2 * g * h);
+    for (int i = 0; i < released; ++i) {
+        EXPECT_NEAR(impactSpeed[size_t(i)] / v, 1.0f, 0.02f)
+            << "ball " << i << ": " << impactSpeed[size_t(i)];
+        ::testing::Test::RecordProperty("impact_speed_" + std::to_string(i),
+                                        std::to_string(impactSpeed[size_t(i)]));
+        std::printf("%s ball %d: %.4f m/s at the row (sqrt(2 g h) = %.4f)\n", scene, i,
+                    impactSpeed[size_t(i)], v);
+    }
+    int out = 0;
+    for (size_t i = 0; i < n; ++i) {
+        const bool leaves = i >= n - size_t(released);
+        out += farRise[i] > 0.5f * h;
+        if (leaves)
+            EXPECT_GT(farRise[i], 0.5f * h) << "ball " << i << " should swing out";
+        else // nearly still: it took under 1 % of a released ball's energy (a tenth of its speed) at any time
+            EXPECT_LT(straySpeed[i], 0.1f * v) << "ball " << i << " should stay";
+        std::printf("%s ball %zu: rise beyond the row %.4f m, off its rest place %.4f m at up to %.4f m/s "
+                    "(impact speed %.4f)\n",
+                    scene, i, farRise[i], stray[i], straySpeed[i], v);
+    }
+    EXPECT_EQ(out, released);
+}
+
+} // namespace
+
+TEST(JointScenes, CradleOnStringsSendsOutOneBallForOne) { checkCradle("cradle-strings", 1); }
+TEST(JointScenes, CradleOnStringsSendsOutTwoBallsForTwo) { checkCradle("cradle-strings-2", 2); }
+TEST(JointScenes, CradleOnStringsSendsOutThreeBallsForThree) { checkCradle("cradle-strings-3", 3); }
+
+// 20 links on hinges, kicked: no hinge's two anchors part by 1 % of a link's length at any step, and the
+// chain from its pin to the last link's end is never 1 % longer than its links end to end.
+TEST(JointScenes, HingeChainHoldsTogetherWhileItSwings) {
+    float pitch = 0, length0 = 0, worstGap = 0, worstStretch = 0, swing = 0;
+    size_t links = 0, joints = 0;
+    Vector top, bottomAnchor; // the pin (world) and the last link's hinge (in its frame)
+    const RunStatus status = runProbed("hinge-chain", 180, [&](const World& w, long step) {
+        const RBDynamics& last = *w.named("bottom")->getDynamics();
+        if (step == 0) {
+            links = w.bodies().size();
+            joints = w.joints().size();
+            for (const iJoint* j : w.joints()) {
+                if (!j->getBodyB()) top = j->getLocalAnchorB(); // the world's: world coordinates
+                if (j->getBodyA() == w.named("bottom")->getRB()) bottomAnchor = j->getLocalAnchorA();
+            }
+        }
+        // The end of the last link: its hinge mirrored through its centre.
+        const Vector end = 2 * last.position - worldPoint(w.named("bottom")->getRB(), bottomAnchor);
+        if (step == 0) { // as built, hanging straight: the chain's length, and a link's hinge to hinge
+            length0 = length(end - top);
+            pitch = length0 / float(links);
+        }
+        for (const iJoint* j : w.joints()) worstGap = std::max(worstGap, anchorGap(j));
+        worstStretch = std::max(worstStretch, length(end - top) / length0 - 1);
+        swing = std::max(swing, std::fabs(end.x - top.x));
+    });
+    ASSERT_EQ(status, RUN_OK);
+    ASSERT_EQ(links, 20u);
+    ASSERT_EQ(joints, 20u);
+    EXPECT_LT(worstGap, 0.01f * pitch);
+    EXPECT_LT(worstStretch, 0.01f);
+    EXPECT_GT(swing, pitch); // it did swing
+    std::printf("hinge-chain: worst anchor gap %.5f m (link %.3f m), worst stretch %.4f %%, swing %.3f m\n",
+                worstGap, pitch, 100 * worstStretch, swing);
+}
+
+// The door's motor drives it open at kDoorMotorSpeed into its stop at kDoorOpen and keeps pushing; a ball
+// thrown at it pushes the same way. The hinge angle stays within [closed, open] +- 0.01 rad at every step,
+// and the door ends at rest at the open stop.
+TEST(JointScenes, DoorStaysWithinItsHingeLimitsAgainstMotorAndBall) {
+    float lowest = 1e9f, highest = -1e9f, endAngle = 0, endSpeed = 0, thrown = 0, slowest = 1e9f;
+    Vector aim;
+    const iHingeJoint* hinge = nullptr;
+    long throwStep = -1;
+    const RunStatus status = runProbed("door", 300, [&](const World& w, long step) {
+        ASSERT_EQ(w.joints().size(), 1u);
+        hinge = dynamic_cast<const iHingeJoint*>(w.joints().front());
+        ASSERT_NE(hinge, nullptr);
+        lowest = std::min(lowest, hinge->getAngle());
+        highest = std::max(highest, hinge->getAngle());
+        endAngle = hinge->getAngle();
+        endSpeed = hinge->getSpeed();
+        // The ball: did it hit the door (lose more than half its speed along its throw within 0.5 s)?
+        if (const iPhysicsFrame* ball = w.named("ball")) {
+            const Vector v = ball->getDynamics()->velocity;
+            if (throwStep < 0) {
+                throwStep = step;
+                thrown = length(v);
+                aim = normal(v);
+            } else if (float(step - throwStep) * stepOf(w) < 0.5f) {
+                slowest = std::min(slowest, dot(v, aim));
+            }
+        }
+    });
+    ASSERT_EQ(status, RUN_OK);
+    EXPECT_GT(lowest, kDoorClosed - 0.01f);
+    EXPECT_LT(highest, kDoorOpen + 0.01f);
+    EXPECT_NEAR(endAngle, kDoorOpen, 0.01f);
+    EXPECT_NEAR(endSpeed, 0.0f, 0.01f);
+    ASSERT_GE(throwStep, 0);
+    EXPECT_LT(slowest, 0.5f * thrown);
+    std::printf("door: angle in [%.5f, %.5f] rad (limits [%.2f, %.2f]), ends at %.5f rad, %.5f rad/s; ball "
+                "thrown at %.2f m/s, slowest along its throw %.3f m/s\n",
+                lowest, highest, kDoorClosed, kDoorOpen, endAngle, endSpeed, thrown, slowest);
+}
+
+// The ragdoll run as the game runs it for 480 frames (7.7 s), watched every step.
+struct RagdollRun {
+    RunStatus status = RUN_BAD_ARGUMENTS;
+    size_t joints = 0;
+    bool finite = true;
+    float restedAt = -1;                     // s: from then on every body asleep or under 0.05 m/s
+    float worstGap = 0, lowest = 1e9f;       // at any step
+    float restingGap = 0, restingLow = 1e9f; // once at rest
+    long worstGapStep = -1, lowestStep = -1;
+};
+
+const RagdollRun& ragdollRun() {
+    static RagdollRun r = [] {
+        RagdollRun run;
+        run.status = runProbed("ragdoll", 480, [&run](const World& w, long step) {
+            run.joints = w.joints().size();
+            float gap = 0;
+            for (const iJoint* j : w.joints()) gap = std::max(gap, anchorGap(j));
+            const float low = lowestBoxCorner(w);
+            if (gap > run.worstGap) run.worstGap = gap, run.worstGapStep = step;
+            if (low < run.lowest) run.lowest = low, run.lowestStep = step;
+            run.finite = run.finite && w.allFinite();
+            bool still = true; // the sleep speed (iPhysicsSceneSettings.h)
+            for (const iPhysicsFrame* f : w.bodies())
+                still = still && (f->getDynamics()->sleeping || speedOf(f) < 0.05f);
+            if (!still) {
+                run.restedAt = -1;
+                run.restingGap = 0;
+                run.restingLow = 1e9f;
+            } else {
+                if (run.restedAt < 0) run.restedAt = float(step) * stepOf(w);
+                run.restingGap = std::max(run.restingGap, gap);
+                run.restingLow = std::min(run.restingLow, low);
+            }
+        });
+        std::printf(
+            "ragdoll: worst anchor gap %.5f m (step %ld), lowest corner %.5f m (step %ld); at rest from "
+            "%.2f s with gaps up to %.5f m, lowest corner %.5f m\n",
+            run.worstGap, run.worstGapStep, run.lowest, run.lowestStep, run.restedAt, run.restingGap,
+            run.restingLow);
+        return run;
+    }();
+    return r;
+}
+
+// Dropped on the floor, the ragdoll comes to rest (every body asleep or under the sleep speed, 0.05 m/s)
+// within 5 s and stays so, every state finite; at rest its joints' anchors are within 1 cm of each other and
+// no box corner is more than 1 cm below the floor.
+TEST(JointScenes, RagdollComesToRestOnTheFloorWithItsJointsTogether) {
+    const RagdollRun& r = ragdollRun();
+    ASSERT_EQ(r.status, RUN_OK);
+    EXPECT_EQ(r.joints, 9u); // neck, shoulders, hips; elbows, knees
+    EXPECT_TRUE(r.finite);
+    EXPECT_GE(r.restedAt, 0.0f);
+    EXPECT_LT(r.restedAt, 5.0f);
+    EXPECT_LT(r.restingGap, 0.01f);
+    EXPECT_GT(r.restingLow, -0.01f);
+}
+
+// KNOWN FAILING (engine, reported): the same truths at every step of the fall. Measured at 60 Hz: anchors
+// 5.8 cm apart and a corner 3.8 cm below the floor as limbs land. The continuous sweep (Physics/
+// ContinuousStage.cpp) puts a body back at its first touch alone, and the deep-overlap projection
+// (Physics/ContactRestitution.cpp) moves it alone: neither takes its joints along, so the joint parts by the
+// distance moved and drags its partner into the floor as it closes. Repro: two 0.4 m boxes end to end on a
+// ball joint, tilted 0.3 rad, dropped from 1 m: anchors 2.6 cm apart whatever the masses (4 or 20 solver
+// iterations). Enable with the fix.
+TEST(JointScenes, DISABLED_RagdollJointsStayTogetherAndAboveTheFloorAtEveryStep) {
+    const RagdollRun& r = ragdollRun();
+    ASSERT_EQ(r.status, RUN_OK);
+    EXPECT_LT(r.worstGap, 0.01f);
+    EXPECT_GT(r.lowest, -0.01f);
+}
