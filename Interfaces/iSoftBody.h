@@ -5,8 +5,9 @@
 // spring, and each pair two places apart along a row or column a bend spring, all at their distance at
 // creation. The bodies have no collision geometry: the game gives them their shapes (a sim-only package has
 // no collision module), e.g. a CreateCSphere per body. Tightness and damping apply to every spring.
-// Delete() deletes the springs and the bodies it made (in a step, at its end, as Delete() of each does). A body
-// deleted by someone else (its scene's Delete(), or the game's) reads as nullptr and is not deleted again.
+// Delete() deletes the springs and the bodies it made (in a step, at its end, as Delete() of each does). A
+// body deleted by someone else (its scene's Delete(), or the game's) reads as nullptr and is not deleted
+// again.
 #pragma once
 
 #include "iRigidBody.h"
