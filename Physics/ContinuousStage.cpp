@@ -2,10 +2,20 @@
 #include "ContinuousStage.h"
 
 #include "ContactSolver.h"
+#include "Joint.h"
 #include "MathBridge.h"
 #include "RigidBody.h"
+#include "iCollisionGeometry.h"
 
 namespace physics {
+
+namespace {
+bool joinedWithoutContact(const RigidBody* body, const iRigidBody* other) {
+    for (const Joint* j : body->joints)
+        if (j->acting() && !j->collideConnected && (j->bodyA() == other || j->bodyB() == other)) return true;
+    return false;
+}
+} // namespace
 
 size_t ContinuousStage::run(const std::vector<RigidBody*>& bodies, iCollisionSpace* space) {
     iShapeCast* cast = space ? castOf(space) : nullptr;
@@ -32,6 +42,12 @@ size_t ContinuousStage::run(const std::vector<RigidBody*>& bodies, iCollisionSpa
     }
     if (m_sweeps.empty() || cast->sweepBodies(m_sweeps.data(), m_sweeps.size()) == 0) return 0;
     size_t moved = 0;
+    for (size_t i = 0; i < m_sweeps.size(); ++i) {
+        // A body a joint joins without contact is no obstacle (the space does not know joints): a limb swept
+        // into the next limb of its ragdoll was put back, parting its joints by the distance.
+        BodySweep& s = m_sweeps[i];
+        if (s.hit && joinedWithoutContact(m_owners[i], s.hit->getRigidBody())) s.hit = nullptr;
+    }
     for (size_t i = 0; i < m_sweeps.size(); ++i) {
         const BodySweep& s = m_sweeps[i];
         if (!s.hit || !(s.fraction < 1.0f)) continue;
