@@ -34,11 +34,7 @@ public:
     }
     float getMinLength() const override { return float(m_min); }
     float getMaxLength() const override { return float(m_max); }
-    float getLength() const override {
-        JointFrame a, b;
-        worldFrames(a, b);
-        return float((b.point - a.point).norm());
-    }
+    float getLength() const override { return float(anchorDistance()); }
 
     void prepare(const SolverBody& a, const SolverBody& b, Real) override {
         const Vec3 pA = worldPoint(a, m_frameA), pB = worldPoint(b, m_frameB);

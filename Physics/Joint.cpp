@@ -110,6 +110,12 @@ void Joint::worldFrames(JointFrame& a, JointFrame& b) const {
     b = world(m_b, m_localB);
 }
 
+Real Joint::anchorDistance() const {
+    JointFrame a, b;
+    worldFrames(a, b);
+    return (b.point - a.point).norm();
+}
+
 void Joint::enter(int a, int b) {
     slotA = a;
     slotB = b;

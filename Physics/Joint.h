@@ -99,6 +99,7 @@ protected:
     JointFrame m_localA, m_localB, m_frameA, m_frameB;
     // The current poses of the two frames, for the getters (angle, length, ...): world, from RBDynamics.
     void worldFrames(JointFrame& a, JointFrame& b) const;
+    Real anchorDistance() const; // between the two anchors now (distance joints, springs)
 
 private:
     JointFrame rootFrame(const RigidBody* body, const JointFrame& local) const;

@@ -8,10 +8,9 @@
 // rope's bodies are in no scene until addToScene. They have no collision geometry (Physics/ never sees
 // Collision/): the game gives them shapes.
 //
-// A scene's Delete() deletes the bodies in it, so the rope watches for its segments' destruction
-// (watchRigidBodies): a segment deleted by anyone else reads nullptr from then on, and the rope's own
-// Delete() skips it instead of deleting it twice.
-#include "RigidBody.h"
+// The segments are a BodyGroup: a segment deleted by anyone else (its scene's Delete()) reads nullptr from
+// then on, and the rope's own Delete() skips it instead of deleting it twice.
+#include "BodyGroup.h"
 
 #include "iBallJoint.h"
 #include "iDistanceJoint.h"
@@ -26,28 +25,13 @@ namespace physics {
 
 namespace {
 
-// A segment of mass m at p, in no scene, its bookkeeping started at p (as a body made at its frame's pose).
-RigidBody* makeRopeSegment(const Vector& p, float m, float radius) {
-    RigidBody* body = new RigidBody(nullptr);
-    RBDynamics& d = body->getDynamics();
-    d.mass = m;
-    d.position = p;
-    d.setInertiaTensor(getSphereInertiaTensor(m, radius));
-    body->snapshotValid();
-    body->recordPreviousPose();
-    body->recordStepPose();
-    return body;
-}
-
 class Rope final : public iRope {
 public:
     Rope(const Vector& start, const Vector& end, int segments, float segmentMass) {
-        watchRigidBodies(&forgetDestroyedSegment, this);
         const float spacing = (end - start).length() / float(segments - 1);
-        m_segments.reserve(size_t(segments));
         for (int i = 0; i < segments; ++i) {
             const float along = float(i) / float(segments - 1);
-            m_segments.push_back(makeRopeSegment(start + (end - start) * along, segmentMass, spacing / 4));
+            m_group.makeBody(start + (end - start) * along, segmentMass, spacing / 4);
         }
         m_links.reserve(size_t(segments - 1));
         for (int i = 0; i + 1 < segments; ++i) {
@@ -87,47 +71,23 @@ public:
         return true;
     }
 
-    bool addToScene(iPhysicsScene* scene) override {
-        if (!scene) {
-            error(L"iRope::addToScene: nullptr scene; refused");
-            return false;
-        }
-        bool all = true;
-        for (iRigidBody* segment : m_segments) {
-            if (!segment) {
-                error(L"iRope::addToScene: a segment was deleted; skipped");
-                all = false;
-            } else {
-                all = scene->add(segment) && all; // the scene says why when it refuses
-            }
-        }
-        return all;
-    }
-
-    void killAll() override {
-        for (iRigidBody* segment : m_segments)
-            if (segment) lifetimeOf(segment)->kill();
-    }
+    bool addToScene(iPhysicsScene* scene) override { return m_group.addTo(scene, L"iRope"); }
+    void killAll() override { m_group.killAll(); }
 
     // The joints first (they let go of nothing then), then the bodies; each Delete() waits for the end of
     // a running step by itself, so this is safe from a callback.
     void Delete() const override {
-        unwatchRigidBodies(&forgetDestroyedSegment, const_cast<Rope*>(this));
         for (iDistanceJoint* link : m_links) link->Delete();
         for (iBallJoint* pin : m_pins)
             if (pin) pin->Delete();
-        for (iRigidBody* segment : m_segments)
-            if (segment) segment->Delete();
+        m_group.deleteAll();
         delete this;
     }
 
 private:
     ~Rope() override = default;
-    static void forgetDestroyedSegment(const iRigidBody* body, void* rope) {
-        for (iRigidBody*& segment : static_cast<Rope*>(rope)->m_segments)
-            if (segment == body) segment = nullptr;
-    }
-    std::vector<iRigidBody*> m_segments;
+    BodyGroup m_group; // the segments
+    std::vector<iRigidBody*>& m_segments = m_group.bodies;
     std::vector<iDistanceJoint*> m_links;
     iBallJoint* m_pins[2] = {nullptr, nullptr}; // start, end
 };

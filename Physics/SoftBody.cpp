@@ -5,10 +5,9 @@
 // active scene: they are in no scene until addToScene. They have no collision geometry (Physics/ never sees
 // Collision/): the game gives them shapes.
 //
-// A scene's Delete() deletes the bodies in it, so the soft body watches for its bodies' destruction
-// (watchRigidBodies): a body deleted by anyone else reads nullptr from then on, and the soft body's own
-// Delete() skips it instead of deleting it twice.
-#include "RigidBody.h"
+// The bodies are a BodyGroup: one deleted by anyone else (its scene's Delete()) reads nullptr from then on,
+// and the soft body's own Delete() skips it instead of deleting it twice.
+#include "BodyGroup.h"
 
 #include "iPhysicsScene.h"
 #include "iSoftBody.h"
@@ -24,33 +23,17 @@ namespace physics {
 
 namespace {
 
-// A grid body of mass m at p, in no scene, its bookkeeping started at p (as a body made at its frame's pose).
-RigidBody* makeSoftBodyPoint(const Vector& p, float m, float radius) {
-    RigidBody* body = new RigidBody(nullptr);
-    RBDynamics& d = body->getDynamics();
-    d.mass = m;
-    d.position = p;
-    d.setInertiaTensor(getSphereInertiaTensor(m, radius));
-    body->snapshotValid();
-    body->recordPreviousPose();
-    body->recordStepPose();
-    return body;
-}
-
 class SoftBody final : public iSoftBody {
 public:
     SoftBody(const bool* mask, int columns, int rows, const Vector& corner, const Vector& columnStep,
              const Vector& rowStep, float bodyMass, float stiffness, float damping)
-        : m_columns(columns), m_rows(rows), m_grid(size_t(columns) * size_t(rows), nullptr) {
-        watchRigidBodies(&forgetDestroyedBody, this);
+        : m_columns(columns), m_rows(rows), m_grid(size_t(columns) * size_t(rows), -1) {
         const float radius = 0.5f * std::fmin(columnStep.length(), rowStep.length());
         for (int r = 0; r < rows; ++r)
             for (int c = 0; c < columns; ++c) {
                 if (!mask[r * columns + c]) continue;
-                iRigidBody* body =
-                    makeSoftBodyPoint(corner + columnStep * float(c) + rowStep * float(r), bodyMass, radius);
-                m_grid[size_t(r * columns + c)] = body;
-                m_bodies.push_back(body);
+                m_grid[size_t(r * columns + c)] = int(m_bodies.size());
+                m_group.makeBody(corner + columnStep * float(c) + rowStep * float(r), bodyMass, radius);
             }
         // Each unordered pair once: structural, shear (both diagonals of the cell), bend.
         for (int r = 0; r < rows; ++r)
@@ -73,7 +56,8 @@ public:
     }
     iRigidBody* getBodyAt(int column, int row) const override {
         if (column < 0 || column >= m_columns || row < 0 || row >= m_rows) return nullptr;
-        return m_grid[size_t(row * m_columns + column)];
+        const int i = m_grid[size_t(row * m_columns + column)];
+        return i < 0 ? nullptr : m_bodies[size_t(i)];
     }
     int getSpringCount() const override { return int(m_springs.size()); }
     iSpring* getSpring(int i) const override {
@@ -98,47 +82,18 @@ public:
         return true;
     }
 
-    bool addToScene(iPhysicsScene* scene) override {
-        if (!scene) {
-            error(L"iSoftBody::addToScene: nullptr scene; refused");
-            return false;
-        }
-        bool all = true;
-        for (iRigidBody* body : m_bodies) {
-            if (!body) {
-                error(L"iSoftBody::addToScene: a body was deleted; skipped");
-                all = false;
-            } else {
-                all = scene->add(body) && all; // the scene says why when it refuses
-            }
-        }
-        return all;
-    }
-
-    void killAll() override {
-        for (iRigidBody* body : m_bodies)
-            if (body) lifetimeOf(body)->kill();
-    }
+    bool addToScene(iPhysicsScene* scene) override { return m_group.addTo(scene, L"iSoftBody"); }
+    void killAll() override { m_group.killAll(); }
 
     // The springs first, then the bodies; each Delete() waits for the end of a running step by itself.
     void Delete() const override {
-        unwatchRigidBodies(&forgetDestroyedBody, const_cast<SoftBody*>(this));
         for (iSpring* spring : m_springs) spring->Delete();
-        for (iRigidBody* body : m_bodies)
-            if (body) body->Delete();
+        m_group.deleteAll();
         delete this;
     }
 
 private:
     ~SoftBody() override = default;
-    static void forgetDestroyedBody(const iRigidBody* destroyed, void* softBody) {
-        SoftBody* self = static_cast<SoftBody*>(softBody);
-        for (iRigidBody*& body : self->m_bodies)
-            if (body == destroyed) body = nullptr;
-        for (iRigidBody*& body : self->m_grid)
-            if (body == destroyed) body = nullptr;
-    }
-
     // A spring between places (c1, r1) and (c2, r2) when both hold a body.
     void join(int c1, int r1, int c2, int r2, float k, float damping) {
         iRigidBody* a = getBodyAt(c1, r1);
@@ -153,8 +108,9 @@ private:
     }
 
     int m_columns, m_rows;
-    std::vector<iRigidBody*> m_grid;   // row by row, nullptr where the mask is false
-    std::vector<iRigidBody*> m_bodies; // the bodies alone, row by row
+    std::vector<int> m_grid; // row by row, each place's index in m_bodies (-1 where the mask is false)
+    BodyGroup m_group;       // the bodies alone, row by row
+    std::vector<iRigidBody*>& m_bodies = m_group.bodies;
     std::vector<iSpring*> m_springs;
     bool m_failed = false;
 };

@@ -71,11 +71,7 @@ public:
         m_maxForce = newtons;
         return true;
     }
-    float getLength() const override {
-        JointFrame a, b;
-        worldFrames(a, b);
-        return float((b.point - a.point).norm());
-    }
+    float getLength() const override { return float(anchorDistance()); }
 
     void prepare(const SolverBody& a, const SolverBody& b, Real) override {
         const Vec3 pA = worldPoint(a, m_frameA), pB = worldPoint(b, m_frameB);

@@ -1,6 +1,7 @@
 # The simulator's files, relative to Physics/ (also read by the package generator).
 set(GUARDIAN_PHYSICS_SOURCES
   BallJoint.cpp
+  BodyGroup.cpp
   BodyMotion.cpp
   DistanceJoint.cpp
   FixedJoint.cpp
@@ -31,6 +32,7 @@ set(GUARDIAN_PHYSICS_SOURCES
   ShockPropagation.cpp
   SoftBody.cpp)
 set(GUARDIAN_PHYSICS_HEADERS
+  BodyGroup.h
   BodyValidation.h
   Composite.h
   FrameDriver.h
