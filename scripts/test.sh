@@ -1,22 +1,28 @@
 #!/usr/bin/env bash
 # Builds and runs every test: a warnings-as-errors build (g++), the same with clang++ (portable C++17; the fast
-# tests only), then an AddressSanitizer+UBSan build. The g++ build compiles each file on its own (so a file
-# that misses an include fails there); the other two are unity builds (CMAKE_UNITY_BUILD: several files per
-# compiler run, which saves most of the time spent parsing Eigen and GoogleTest again).
+# tests only), then an AddressSanitizer+UBSan build. The g++ build compiles each shipped file (Interfaces/,
+# Physics/, Collision/, Framework/, ReferenceGame/) on its own, so a file that misses an include fails there;
+# the test programs, the double-precision companion library and the other two passes are unity builds
+# (several files per compiler run, which saves most of the time spent parsing and instantiating Eigen and
+# GoogleTest again). Each pass prints how long it took to build and to test.
 # Usage: scripts/test.sh [--quick]   (--quick: the g++ build only, no clang++ or sanitizer build)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/install-deps.sh
+echo "== dependencies ready after $SECONDS s"
 jobs=$(nproc 2>/dev/null || echo 2)
 
 run_suite() { # NAME BUILD_DIR CTEST_ARGS -- CMAKE_ARGS...
   local name=$1 dir=$2 ctest_args=$3
   shift 4
   echo "== $name: configure, build, test ($dir)"
+  local start=$SECONDS
   cmake -S . -B "$dir" -DGUARDIAN_WERROR=ON "$@" >/dev/null
   cmake --build "$dir" -j "$jobs"
+  local built=$SECONDS
   # shellcheck disable=SC2086
   ctest --test-dir "$dir" -j "$jobs" --output-on-failure $ctest_args
+  echo "== $name: built in $((built - start)) s, tested in $((SECONDS - built)) s"
 }
 
 # Line tables only (-g1, not -g): a failure's backtrace keeps its file and line, and the compiler writes a

@@ -19,7 +19,7 @@ namespace {
 
 // 10^5 pairs per shape pair in normal builds; under ASan/UBSan (which check memory, not statistics) fewer.
 #if defined(__SANITIZE_ADDRESS__)
-constexpr int kPairs = 20000;
+constexpr int kPairs = 5000;
 #else
 constexpr int kPairs = 100000;
 #endif

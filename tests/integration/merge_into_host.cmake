@@ -99,7 +99,7 @@ message(STATUS "${PACKAGE}: ${n} lines merged as INTEGRATION.md lists; the rest 
 
 # The host's own game builds and runs unchanged, now with the package inside, and so do the physics checks.
 execute_process(COMMAND ${CMAKE_COMMAND} -S "${template}/checks" -B "${WORK}/build" -DCMAKE_BUILD_TYPE=
-                        -DCMAKE_UNITY_BUILD=ON -DHOST=${host} -DPACKAGE=${PACKAGE} RESULT_VARIABLE rc OUTPUT_QUIET)
+                        -DCMAKE_UNITY_BUILD=ON -DCMAKE_UNITY_BUILD_BATCH_SIZE=0 -DHOST=${host} -DPACKAGE=${PACKAGE} RESULT_VARIABLE rc OUTPUT_QUIET)
 if(NOT rc EQUAL 0)
   message(FATAL_ERROR "the merged host did not configure")
 endif()
