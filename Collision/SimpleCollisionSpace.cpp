@@ -222,17 +222,9 @@ void SimpleCollisionSpace::populateContactList(float delta) {
     m_contacts.clear();
     m_features.clear();
     m_contactGeoms.clear();
-    m_entries.clear();
-    m_shapes.clear();
     m_notices.clear();
     const bool continuous = delta > 0.0f && std::isfinite(delta) && m_samplesPerSecond > 0;
-    for (CollisionGeometry* g : m_members) {
-        Entry e;
-        if (!gatherEntry(g, continuous, e)) continue;
-        e.g->spaceState().call = m_call;
-        e.g->spaceState().entry = int(m_entries.size());
-        m_entries.push_back(e);
-    }
+    gatherEntries(continuous);
     // Candidate pairs (planes first: when the contact budget fills, the ground is the last thing to lose).
     m_broadphase->findPairs(m_entries, m_pairs);
     const float stepDelta = continuous ? delta : 0.0f;
@@ -256,6 +248,26 @@ void SimpleCollisionSpace::populateContactList(float delta) {
     carryRestingPairs(); // pairs not tested because both rest still touch
     m_populating = false;
     reportTouching();
+}
+
+void SimpleCollisionSpace::gatherEntries(bool continuous) {
+    m_entries.clear();
+    m_shapes.clear();
+    for (CollisionGeometry* g : m_members) {
+        Entry e;
+        if (!gatherEntry(g, continuous, e)) continue;
+        e.g->spaceState().call = m_call;
+        e.g->spaceState().entry = int(m_entries.size());
+        m_entries.push_back(e);
+    }
+}
+
+size_t SimpleCollisionSpace::findCandidatePairs() {
+    if (m_notifying || m_populating) return 0;
+    ++m_call;
+    gatherEntries(false);
+    m_broadphase->findPairs(m_entries, m_pairs);
+    return m_pairs.size();
 }
 
 bool SimpleCollisionSpace::setContactBudget(size_t maxContacts) {

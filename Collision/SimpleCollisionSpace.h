@@ -102,6 +102,9 @@ public:
     bool isNotifying() const { return m_notifying; }
     // Its candidate-pair stage (for tests and benchmarks: TreeBroadphase counts its tree queries).
     Broadphase& broadphase() { return *m_broadphase; }
+    // That stage alone, as another engine's broadphase is timed (each geometry's box at its pose, then the
+    // candidate pairs; no exact test, contact or event): how many candidate pairs it found. For benchmarks.
+    size_t findCandidatePairs();
 
     // Per-geometry working state for one populate call.
     struct Entry {
@@ -133,6 +136,7 @@ private:
     ~SimpleCollisionSpace();
     void removeNow(CollisionGeometry* g);
     bool gatherEntry(CollisionGeometry* g, bool continuous, Entry& e);
+    void gatherEntries(bool continuous); // this call's entries, every member gathered
     void testPair(const Entry& a, const Entry& b, float delta);
     void testSensorPair(const Entry& a, const Entry& b);
     bool testAtPoses(const Entry& a, const Entry& b, float t, unsigned tag);

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Builds and runs every test: a warnings-as-errors build (g++), the same with clang++ (portable C++17; the fast
-# tests only), then an AddressSanitizer+UBSan build. The g++ build compiles each shipped file (Interfaces/,
-# Physics/, Collision/, Framework/, ReferenceGame/) on its own, so a file that misses an include fails there;
+# tests only), then an AddressSanitizer+UBSan build (clang++). The g++ build compiles each shipped file
+# (Interfaces/, Physics/, Collision/, Framework/, ReferenceGame/) on its own, so a missing include fails there;
 # the test programs, the double-precision companion library and the other two passes are unity builds
 # (several files per compiler run, which saves most of the time spent parsing and instantiating Eigen and
 # GoogleTest again). Each pass prints how long it took to build and to test.
@@ -38,6 +38,9 @@ if [ "${1:-}" != "--quick" ]; then
     -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_UNITY_BUILD=ON -DGUARDIAN_BUILD_TESTBED=OFF -DGUARDIAN_DOUBLE_COMPANION=OFF
   # The package and install tests build projects of their own without sanitizers: they ran above. The
   # extremes suite's long runs (a 10^4-step soak: 41 s under ASan) and the testbed window ran above too.
-  run_suite "sanitizers (ASan+UBSan)" build-asan "-LE integration|extremes" -- "${lines_only[@]}" \
+  # clang++ builds the instrumented code three times faster than g++ (a unity file of Physics/: 22 s
+  # against 65 s), and its AddressSanitizer and UBSan are the reference implementations.
+  run_suite "sanitizers (ASan+UBSan, clang++)" build-asan "-LE integration|extremes" -- "${lines_only[@]}" \
+    -DCMAKE_CXX_COMPILER=clang++ \
     -DGUARDIAN_SANITIZE=ON -DCMAKE_UNITY_BUILD=ON -DGUARDIAN_BUILD_TESTBED=OFF -DGUARDIAN_DOUBLE_COMPANION=OFF
 fi

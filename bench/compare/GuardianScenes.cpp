@@ -1,11 +1,13 @@
 // GuardianScenes.cpp - bench_compare's adapter for our engine: builds a SceneDesc through the public API only
 // (Interfaces/ and ReferenceGame's World helper, as the other benchmarks do), steps it with
 // iPhysicsScene::update at 60 Hz, reads poses back, and times a collision space's populateContactList for the
-// broadphase row (iCollisionSpace has no pair-only call: the figure includes the narrow phase).
+// broadphase row: the whole call (with the narrow phase), and the candidate-pair stage alone (an internal
+// call of the space, SimpleCollisionSpace::findCandidatePairs, as Bullet's and ODE's broadphases are timed).
 #include "Scene.h"
 
 #include "MathDeclarations.h"
 #include "RBDynamics.h"
+#include "SimpleCollisionSpace.h"
 #include "World.h"
 #include "iCollisionSpace.h"
 #include "iContactSettings.h"
@@ -102,7 +104,9 @@ private:
 
 class GuardianPairs : public PairFinder, private GuardianWorld {
 public:
-    GuardianPairs(const SceneDesc& s, bool octree) : GuardianWorld(s, SimOptions{}, octree) {}
+    GuardianPairs(const SceneDesc& s, bool octree, bool candidatesOnly = false)
+        : GuardianWorld(s, SimOptions{}, octree),
+          m_candidates(candidatesOnly ? dynamic_cast<SimpleCollisionSpace*>(m_world->space()) : nullptr) {}
     void place(const std::vector<Pose>& poses) override {
         for (size_t i = 0; i < poses.size() && i < m_bodies.size(); ++i) {
             m_bodies[i]->position = vectorOf(poses[i].p);
@@ -110,9 +114,13 @@ public:
         }
     }
     size_t findPairs() override {
+        if (m_candidates) return m_candidates->findCandidatePairs();
         m_world->space()->populateContactList(float(kDt));
         return m_world->space()->getNumContacts();
     }
+
+private:
+    SimpleCollisionSpace* m_candidates;
 };
 
 } // namespace
@@ -138,6 +146,10 @@ std::unique_ptr<PairFinder> makeGuardianPairs(const SceneDesc& scene) {
 
 std::unique_ptr<PairFinder> makeGuardianOctreePairs(const SceneDesc& scene) {
     return std::make_unique<GuardianPairs>(scene, true);
+}
+
+std::unique_ptr<PairFinder> makeGuardianCandidatePairs(const SceneDesc& scene, bool octree) {
+    return std::make_unique<GuardianPairs>(scene, octree, true);
 }
 
 } // namespace compare

@@ -84,6 +84,9 @@ std::unique_ptr<Sim> makeGuardianSim(const SceneDesc& scene, const SimOptions& o
 std::unique_ptr<PairFinder> makeGuardianPairs(const SceneDesc& scene);
 // The same with the octree space (CreateOctreeCollisionSpace) instead of the simple one.
 std::unique_ptr<PairFinder> makeGuardianOctreePairs(const SceneDesc& scene);
+// The candidate-pair stage alone (each geometry's box, then the broadphase; what Bullet's and ODE's pair
+// finders time), in the simple (sort-and-sweep) or the octree (persistent tree) space.
+std::unique_ptr<PairFinder> makeGuardianCandidatePairs(const SceneDesc& scene, bool octree);
 EngineInfo bulletInfo();
 std::unique_ptr<Sim> makeBulletSim(const SceneDesc& scene, const SimOptions& options);
 std::unique_ptr<PairFinder> makeBulletPairs(const SceneDesc& scene);

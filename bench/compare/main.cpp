@@ -125,20 +125,31 @@ void broadphaseRow(const std::vector<Engine>& engines, int boxes, int rounds) {
     std::printf(
         "\n== broadphase only: %d randomly turned unit boxes on a 1.5 m grid, %d calls each (median)\n",
         boxes, rounds);
-    // The three engines, then Guardian with its octree space (interleaved with them, same rounds).
+    // The three engines, then Guardian with its octree space, then Guardian's candidate-pair stage alone in
+    // each space (interleaved with them, same rounds).
     std::vector<std::unique_ptr<PairFinder>> finders;
-    std::vector<size_t> first;
+    std::vector<std::string> names, notes;
     for (const Engine& e : engines) {
         finders.push_back(e.pairs(scene));
-        first.push_back(finders.back()->findPairs()); // the first call finds every pair: not timed
+        names.push_back(e.info.name);
+        notes.push_back(e.info.pairsNote);
     }
     finders.push_back(makeGuardianOctreePairs(scene));
-    first.push_back(finders.back()->findPairs());
-    std::vector<double> moved[4], still[4];
-    size_t movedPairs[4] = {0, 0, 0, 0}, stillPairs[4] = {0, 0, 0, 0};
+    names.push_back("G octree");
+    notes.push_back("the same with CreateOctreeCollisionSpace (pairs kept between calls)");
+    finders.push_back(makeGuardianCandidatePairs(scene, false));
+    names.push_back("G SAP");
+    notes.push_back("candidate pairs alone, simple space (boxes, sort and sweep: what Bullet's row times)");
+    finders.push_back(makeGuardianCandidatePairs(scene, true));
+    names.push_back("G tree");
+    notes.push_back("candidate pairs alone, octree space (boxes, the persistent tree and its pair set)");
+    const size_t n = finders.size();
+    std::vector<size_t> first(n), movedPairs(n), stillPairs(n);
+    for (size_t e = 0; e < n; ++e) first[e] = finders[e]->findPairs(); // the first call finds every pair
+    std::vector<std::vector<double>> moved(n), still(n);
     for (int round = 0; round < rounds; ++round) {
         std::vector<Pose> poses = jiggled(scene, unsigned(round));
-        for (size_t e = 0; e < finders.size(); ++e) {
+        for (size_t e = 0; e < n; ++e) {
             finders[e]->place(poses);
             Clock::time_point t0 = Clock::now();
             movedPairs[e] = finders[e]->findPairs();
@@ -146,28 +157,28 @@ void broadphaseRow(const std::vector<Engine>& engines, int boxes, int rounds) {
         }
     }
     for (int round = 0; round < rounds; ++round)
-        for (size_t e = 0; e < finders.size(); ++e) {
+        for (size_t e = 0; e < n; ++e) {
             Clock::time_point t0 = Clock::now();
             stillPairs[e] = finders[e]->findPairs();
             still[e].push_back(1000 * seconds(t0));
         }
     std::printf("  %-9s %12s %12s %14s  %s\n", "engine", "moved ms", "still ms", "found (moved)",
                 "what is timed");
-    double m[4], s[4];
-    for (size_t e = 0; e < finders.size(); ++e) {
+    std::vector<double> m(n), s(n);
+    for (size_t e = 0; e < n; ++e) {
         m[e] = median(moved[e]);
         s[e] = median(still[e]);
-        const bool octree = e == engines.size();
-        std::printf("  %-9s %12.3f %12.3f %14zu  %s (first call %zu, still %zu)\n",
-                    octree ? "G octree" : engines[e].info.name.c_str(), m[e], s[e], movedPairs[e],
-                    octree ? "the same with CreateOctreeCollisionSpace (pairs kept between calls)"
-                           : engines[e].info.pairsNote.c_str(),
-                    first[e], stillPairs[e]);
+        std::printf("  %-9s %12.3f %12.3f %14zu  %s (first call %zu, still %zu)\n", names[e].c_str(), m[e],
+                    s[e], movedPairs[e], notes[e].c_str(), first[e], stillPairs[e]);
     }
     std::printf("  time ratio moved: Guardian/Bullet %.2f, Guardian/ODE %.2f; still: Guardian/Bullet %.2f, "
                 "Guardian/ODE %.2f\n",
                 m[0] / m[1], m[0] / m[2], s[0] / s[1], s[0] / s[2]);
     std::printf("  octree space: moved Guardian/Bullet %.2f, still %.2f\n", m[3] / m[1], s[3] / s[1]);
+    std::printf(
+        "  candidate pairs alone / Bullet's dbvt: sort and sweep moved %.2f, still %.2f; tree moved %.2f, "
+        "still %.2f\n",
+        m[4] / m[1], s[4] / s[1], m[5] / m[1], s[5] / s[1]);
     std::fflush(stdout);
 }
 

@@ -18,7 +18,12 @@ using gjkref::V3;
 namespace {
 
 // 10^5 pairs per shape pair in normal builds; under ASan/UBSan (which check memory, not statistics) fewer.
-#if defined(__SANITIZE_ADDRESS__)
+#if defined(__has_feature) // clang++ says so here, g++ in __SANITIZE_ADDRESS__
+#if __has_feature(address_sanitizer)
+#define GUARDIAN_UNDER_ASAN 1
+#endif
+#endif
+#if defined(__SANITIZE_ADDRESS__) || defined(GUARDIAN_UNDER_ASAN)
 constexpr int kPairs = 5000;
 #else
 constexpr int kPairs = 100000;
