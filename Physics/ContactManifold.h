@@ -62,13 +62,11 @@ struct ContactPoint {
          turnB[3] = {Vec4::Zero(), Vec4::Zero(), Vec4::Zero()};
     Real normalMass = 0, tangentMass[2] = {0, 0};
     Real normalImpulse = 0, tangentImpulse[2] = {0, 0}; // accumulated, per sub-step
-    Real solvedImpulse[3] = {0, 0, 0}; // normal and tangent impulses before the sub-step's push out
-    Real gap = 0;                      // its separation at the sub-step's poses (the solve measures it)
-    Real approachSpeed = 0;            // v_n when the solve began (negative: approaching), for restitution
-    Real forceSpeed = 0;               // what this step's forces added to v_n (a_n dt)
-    Real touchSpeed2 = 0;              // v_n^2 at the moment the point touched (the energy a bounce returns)
-    Real maxNormalImpulse = 0;         // over the sub-steps: a point that never pushed does not bounce
-    bool bounced = false;              // it bounced: it left the surface and is not kept next step
+    Real approachSpeed = 0;    // v_n when the solve began (negative: approaching), for restitution
+    Real forceSpeed = 0;       // what this step's forces added to v_n (a_n dt)
+    Real touchSpeed2 = 0;      // v_n^2 at the moment the point touched (the energy a bounce returns)
+    Real maxNormalImpulse = 0; // over the sub-steps: a point that never pushed does not bounce
+    bool bounced = false;      // it bounced: it left the surface and is not kept next step
 };
 
 struct Manifold {
@@ -90,6 +88,7 @@ struct Manifold {
     Real projectable = 0; // how much further its overlap may still be projected out this step
     int count = 0;
     ContactPoint points[4];
+    int block = -1, lane = 0; // where the solver's wide rows hold it during a solve (ContactBlocks.h)
 };
 
 struct PairKey {

@@ -125,6 +125,7 @@ void ContactSolver::solve(Real dt, const SolverBodyAccess& access) {
                            m_settings.jointDampingRatio, h);
     prepare(dt, h);
     orderByLevel();
+    m_blocks.pack(m_manifolds, m_bodies); // the impulses live in the blocks until unpack
     splitForces();
     prepareJoints(h);
     for (int i = 0; i < n; ++i) {
@@ -143,6 +144,7 @@ void ContactSolver::solve(Real dt, const SolverBodyAccess& access) {
         solveJoints(h, JointPass::Relax);
         solveContacts(h, false); // relax: the velocities again, at the new poses
     }
+    m_blocks.unpack(m_manifolds);
     findBounces();
     projectDeepOverlaps();
     applyRestitution();
@@ -241,27 +243,11 @@ void ContactSolver::addForces(Real share) {
 // again and bound friction by it (a box landing at 4 m/s while sliding hopped 0.06 m/s and lost 7 % more
 // slide than Coulomb's law allows).
 void ContactSolver::warmStart(bool firstSubstep) {
-    const Real impact = -m_settings.restitutionThreshold;
-    for (Manifold& m : m_manifolds) {
-        SolverBody &a = m_bodies[m.a], &b = m_bodies[m.b];
-        PairVelocity pair(a, b);
-        for (int i = 0; i < m.count; ++i) {
-            ContactPoint& p = m.points[i];
-            if (!firstSubstep && p.approachSpeed < impact) {
-                p.normalImpulse = p.tangentImpulse[0] = p.tangentImpulse[1] = 0;
-                continue;
-            }
-            pair.apply<0>(p, p.normalImpulse);
-            if (m.friction == 0.0f) continue;
-            pair.apply<1>(p, p.tangentImpulse[0]);
-            pair.apply<2>(p, p.tangentImpulse[1]);
-        }
-        pair.store(a, b);
-    }
+    m_blocks.warmStart(m_bodies, firstSubstep, -m_settings.restitutionThreshold);
 }
 
-// One sweep over the manifolds. Per manifold: the normal impulses twice, then friction bounded by mu times
-// the normal impulses just found, then the normal impulses once more.
+// One sweep over the manifolds, four at a time (ContactBlocks.h). Per manifold: the normal impulses twice,
+// then friction bounded by mu times the normal impulses just found, then the normal impulses again.
 //  - Friction bounded by a stale normal impulse would take a warm-started impact's worth again in every
 //    sub-step.
 //  - Friction last would leave the stack's normal constraints unmet (at 4 sub-steps the 210-box pyramid never
@@ -269,64 +255,15 @@ void ContactSolver::warmStart(bool firstSubstep) {
 //  - One normal pass before friction leaves a box that landed flat turning (its first corners are solved
 //    first), and friction answers the turning: it bounced off sideways, 0.15 rad/s and 20 cm in 4 s. After
 //    two passes, 0.001 rad/s and 1 cm.
-// pushOut: overlap is pushed out softly; otherwise (relax) only approach is stopped.
+// Each point's target: a point apart may close its gap within the sub-step, no more. An impact at a touch
+// (where the continuous stage leaves a fast body) is stopped rigidly: a soft stop lets a few % of the
+// approach through, metres in a sub-step at 10^4 m/s; also in the push-out pass, where the approach is
+// already stopped (a soft target there relaxes the impact's accumulated impulse and lets the same few %
+// through). Otherwise, in the push out, overlap is pushed out softly at a capped speed; in the velocity and
+// relax sweeps only approach is stopped.
 void ContactSolver::solveContacts(Real h, bool pushOut) {
-    for (Manifold& m : m_manifolds) solveManifold(m, h, pushOut);
-}
-
-void ContactSolver::solveManifold(Manifold& m, Real h, bool pushOut) {
-    SolverBody &a = m_bodies[m.a], &b = m_bodies[m.b];
-    // Positions do not change within a sweep, nor between the velocity sweep and the push out that follows
-    // it: each point's gap is measured once for both, and its target worked out once a sweep.
-    Target target[4];
-    for (int i = 0; i < m.count; ++i) {
-        ContactPoint& p = m.points[i];
-        if (!pushOut) p.gap = separation(a, b, p);
-        const Real gap = p.gap;
-        if (gap > 0.0f) {
-            target[i].bias = gap / h; // apart: may close the gap within the sub-step, no more
-        } else if (gap > -m_settings.touchOverlap && p.approachSpeed < -m_settings.restitutionThreshold) {
-            // An impact at a touch (where the continuous stage leaves a fast body) is stopped rigidly: a
-            // soft stop lets a few % of the approach through, metres in a sub-step at 10^4 m/s. Also in the
-            // push-out pass, where the approach is already stopped: a soft target there relaxes the impact's
-            // accumulated impulse and lets the same few % through.
-        } else if (pushOut) {
-            target[i] = {std::max(m.biasRate * gap, Real(-m_settings.maxPushSpeed)), m.massScale,
-                         m.impulseScale};
-        }
-    }
-    PairVelocity pair(a, b);
-    solveNormal(m, target, pair);
-    solveNormal(m, target, pair);
-    if (m.friction > 0.0f) solveFriction(m, pair);
-    solveNormal(m, target, pair);
-    pair.store(a, b);
-}
-
-GUARDIAN_HOT void ContactSolver::solveNormal(Manifold& m, const Target* target, PairVelocity& pair) {
-    for (int i = 0; i < m.count; ++i) {
-        ContactPoint& p = m.points[i];
-        const Target& t = target[i];
-        Real vn = pair.speed<0>(p);
-        Real change = -p.normalMass * t.massScale * (vn + t.bias) - t.impulseScale * p.normalImpulse;
-        Real total = std::max(Real(0), p.normalImpulse + change); // push only, never pull
-        pair.apply<0>(p, total - p.normalImpulse);
-        p.normalImpulse = total;
-        p.maxNormalImpulse = std::max(p.maxNormalImpulse, total);
-    }
-}
-
-GUARDIAN_HOT void ContactSolver::solveFriction(Manifold& m, PairVelocity& pair) {
-    for (int i = 0; i < m.count; ++i) {
-        ContactPoint& p = m.points[i];
-        const Real limit = m.friction * p.normalImpulse; // Coulomb's cone as a box
-        Real total = std::clamp(p.tangentImpulse[0] - pair.speed<1>(p) * p.tangentMass[0], -limit, limit);
-        pair.apply<1>(p, total - p.tangentImpulse[0]);
-        p.tangentImpulse[0] = total;
-        total = std::clamp(p.tangentImpulse[1] - pair.speed<2>(p) * p.tangentMass[1], -limit, limit);
-        pair.apply<2>(p, total - p.tangentImpulse[1]);
-        p.tangentImpulse[1] = total;
-    }
+    m_blocks.solve(m_bodies, ContactBlocks::Sweep{h, pushOut, m_settings.touchOverlap,
+                                                  m_settings.restitutionThreshold, m_settings.maxPushSpeed});
 }
 
 // The velocities the sub-step solved for, and the impulses that produced them, before the push out.
@@ -336,13 +273,7 @@ void ContactSolver::saveVelocities() {
         b.vSolved = b.v;
         b.wSolved = b.w;
     }
-    for (Manifold& m : m_manifolds)
-        for (int i = 0; i < m.count; ++i) {
-            ContactPoint& p = m.points[i];
-            p.solvedImpulse[0] = p.normalImpulse;
-            p.solvedImpulse[1] = p.tangentImpulse[0];
-            p.solvedImpulse[2] = p.tangentImpulse[1];
-        }
+    m_blocks.saveImpulses();
 }
 
 void ContactSolver::restoreVelocities() {
@@ -351,13 +282,7 @@ void ContactSolver::restoreVelocities() {
         b.v = b.vSolved;
         b.w = b.wSolved;
     }
-    for (Manifold& m : m_manifolds)
-        for (int i = 0; i < m.count; ++i) {
-            ContactPoint& p = m.points[i];
-            p.normalImpulse = p.solvedImpulse[0];
-            p.tangentImpulse[0] = p.solvedImpulse[1];
-            p.tangentImpulse[1] = p.solvedImpulse[2];
-        }
+    m_blocks.restoreImpulses();
 }
 
 // Semi-implicit Euler over h: the frame turns about the centre of mass. A body moves by its solved velocity

@@ -24,6 +24,7 @@
 // "Soft Step" (Box2D v3); Bullet's persistent manifold (contact breaking threshold).
 #pragma once
 
+#include "ContactBlocks.h"
 #include "ContactManifold.h"
 #include "FlatMap.h"
 #include "MathBridge.h"
@@ -38,8 +39,7 @@ struct RBDynamics;
 
 namespace physics {
 
-struct PairVelocity; // SolverRows.h
-class Joint;         // Joint.h
+class Joint; // Joint.h
 enum class JointPass;
 
 // Lengths and speeds are in the world's length unit (units per metre: lengthUnitsPerMetre, default 1); the
@@ -179,14 +179,7 @@ private:
     void splitForces();
     void addForces(Real share);
     void warmStart(bool firstSubstep);
-    // A point's normal target for one sweep: reach v_n = -bias, softly (Catto's soft constraint).
-    struct Target {
-        Real bias = 0, massScale = 1, impulseScale = 0;
-    };
     void solveContacts(Real h, bool pushOut);
-    void solveManifold(Manifold& m, Real h, bool pushOut);
-    void solveNormal(Manifold& m, const Target* target, PairVelocity& pair);
-    void solveFriction(Manifold& m, PairVelocity& pair);
     void saveVelocities();
     void moveBodies(Real h);
     void restoreVelocities();
@@ -204,6 +197,7 @@ private:
     std::vector<SolverBody> m_bodies;
     FlatMap<const RBDynamics*, int> m_bodyIndex;
     std::vector<Manifold> m_manifolds; // this step's, while solving
+    ContactBlocks m_blocks;            // their rows and impulses during the sub-steps
     std::vector<Manifold> m_last;      // last step's, in solving order (for warm starting and keeping)
     std::vector<Manifold> m_dormant;   // this step's pairs at rest (both asleep or fixed), carried unsolved
     FlatMap<PairKey, size_t, PairKeyHash> m_lastIndex; // into m_last

@@ -114,7 +114,7 @@ void ContactSolver::propagateShock(Real h) {
                 const Real sign = upperIsB ? 1.0f : -1.0f;
                 upper.v += (sign * upper.invMass * impulse) * p.normal;
                 upper.w += (sign * impulse) * turn;
-                if (onWorld) p.normalImpulse += impulse;
+                if (onWorld) m_blocks.setNormalImpulse(m, i, m_blocks.normalImpulse(m, i) + impulse);
             }
     }
 }

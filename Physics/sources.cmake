@@ -14,6 +14,7 @@ set(GUARDIAN_PHYSICS_SOURCES
   BodyValidation.cpp
   Composite.cpp
   FrameDriver.cpp
+  ContactBlocks.cpp
   ContactManifolds.cpp
   ContactResolution.cpp
   ContactRestitution.cpp
@@ -36,7 +37,9 @@ set(GUARDIAN_PHYSICS_HEADERS
   BodyValidation.h
   Composite.h
   FrameDriver.h
+  ContactBlocks.h
   ContactManifold.h
+  Lanes.h
   ContactResolution.h
   ContactSolver.h
   SolverRows.h

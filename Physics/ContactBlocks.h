@@ -1,0 +1,99 @@
+// ContactBlocks.h - the contact solver's hot loop laid out for the cache and for SIMD: a step's manifolds
+// packed four to a block, one manifold per lane, no two lanes of a block sharing a movable body, their rows
+// in structure-of-arrays form; the bodies' velocities in one flat array, gathered into lanes for a block and
+// scattered back after it (as Box2D v3's and Jolt's solvers do).
+//
+// Each lane does what the scalar solve did for its manifold, operation for operation (Lanes.h), and the
+// packing keeps, for every movable body, the order in which its manifolds are solved (pack()): manifolds
+// that share no movable body commute, so the wide sweep gives the very bits of the sequential one (the
+// committed determinism hashes did not change). Immovable bodies (the static world, fixed and kinematic
+// bodies) are read but never written, so any number of lanes may share one.
+// The rows themselves (directions, arms, effective masses) are worked out by ContactSolver::prepare; the
+// impulses live here from pack() to unpack() (the sub-steps), then go back to the manifolds for restitution,
+// projection and next step's warm start.
+#pragma once
+
+#include "ContactManifold.h"
+#include "Lanes.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace physics {
+
+// One constraint row (the normal, or a tangent) of one point slot across the four lanes.
+struct BlockRow {
+    Lanes3 dir, armA, armB, turnA, turnB; // direction, r x direction, I^-1 (r x direction) on each body
+    Lanes mass;                           // effective mass along the row
+};
+
+struct BlockPoint {
+    BlockRow row[3];                        // the normal and the two tangents
+    Lanes3 anchorA, anchorB;                // body-local anchors (the normal is row[0].dir)
+    Lanes impulse[3], solved[3], maxNormal; // accumulated; before the push out; the most it pushed
+    Lanes approach;                         // v_n when the solve began
+    Lanes gap;                              // separation at the sub-step's poses
+};
+
+struct ContactBlock {
+    int read[2][kLanes];  // velocity slots of body a and b in each lane
+    int write[2][kLanes]; // where they are stored back (a scratch slot for an immovable body or empty lane)
+    int manifold[kLanes]; // -1: an empty lane
+    int points = 0;       // the most points of any lane
+    bool friction = false;
+    Lanes invMassA, invMassB, frictionCoefficient, biasRate, massScale, impulseScale;
+    BlockPoint p[4];
+};
+
+class ContactBlocks {
+public:
+    // What a sweep needs of the solver's settings.
+    struct Sweep {
+        Real h;       // the sub-step
+        bool pushOut; // overlap pushed out softly (else only approach stopped)
+        Real touchOverlap, restitutionThreshold, maxPushSpeed;
+    };
+
+    // Packs this step's manifolds, their rows prepared, and notes each one's block and lane in it.
+    void pack(std::vector<Manifold>& manifolds, const std::vector<SolverBody>& bodies);
+    // Re-applies the accumulated impulses (an impact's only in the first sub-step).
+    void warmStart(std::vector<SolverBody>& bodies, bool firstSubstep, Real impactSpeed);
+    // One sweep: per manifold the normal impulses twice, friction, the normal impulses again. The velocity
+    // and relax sweeps (not pushOut) measure each point's gap at the bodies' poses first.
+    void solve(std::vector<SolverBody>& bodies, const Sweep& sweep);
+    void saveImpulses();
+    void restoreImpulses();
+    // The accumulated normal impulse of a manifold's point (shock propagation adds to it).
+    Real normalImpulse(const Manifold& m, int point) const { return at(m).p[point].impulse[0].lane(m.lane); }
+    void setNormalImpulse(const Manifold& m, int point, Real value) {
+        at(m).p[point].impulse[0].setLane(m.lane, value);
+    }
+    // The impulses back into the manifolds.
+    void unpack(std::vector<Manifold>& manifolds) const;
+    size_t blockCount() const { return m_blocks.size(); }
+
+private:
+    const ContactBlock& at(const Manifold& m) const { return m_blocks[size_t(m.block)]; }
+    ContactBlock& at(const Manifold& m) { return m_blocks[size_t(m.block)]; }
+    int openBlock(int from); // the first block from this one with a free lane (or the end)
+    void fill(ContactBlock& block, int lane, Manifold& m, int index, const std::vector<SolverBody>& bodies);
+    void loadVelocities(const std::vector<SolverBody>& bodies);
+    void storeVelocities(std::vector<SolverBody>& bodies) const;
+    void loadPoses(const std::vector<SolverBody>& bodies);
+    void measureGaps(ContactBlock& block) const;
+
+    struct alignas(16) Velocity {
+        Real v[4], w[4];
+    };
+    struct alignas(16) Pose {
+        Real q[4], origin[4]; // rotation (x, y, z, w) and origin; the static world's is the identity
+    };
+    std::vector<ContactBlock> m_blocks;
+    std::vector<Velocity> m_velocity; // per solver body, then a zero slot and a scratch slot
+    std::vector<Pose> m_pose;         // per solver body, then the zero slot's identity
+    // Packing: each body's last block so far, each block's lanes used, and a skip list to a block with a free
+    // lane.
+    std::vector<int> m_lastBlock, m_used, m_nextOpen;
+};
+
+} // namespace physics
