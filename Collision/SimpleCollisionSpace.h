@@ -172,7 +172,17 @@ private:
     // that a fast body's obstacles are found in O(log N + nearby), not by a pass over all (O(fast x N)).
     void indexObstacles();
     void gatherCandidates(const Vector& lo, const Vector& hi);
-    std::vector<std::pair<float, int>> m_byLowX; // (low x, m_cast index), sorted
+    // A bounded geometry's sphere around its motion (centre, radius) with its low x and m_cast index; the
+    // index is sorted by low x (then m_cast index).
+    struct ObstacleSphere {
+        float lowX;
+        int cast;
+        float y, z, r;
+        bool operator<(const ObstacleSphere& o) const {
+            return lowX < o.lowX || (lowX == o.lowX && cast < o.cast);
+        }
+    };
+    std::vector<ObstacleSphere> m_byLowX;
     std::vector<int> m_unbounded;      // planes and anything without finite bounds: always candidates
     std::vector<int> m_castCandidates; // scratch: one sweep's, in m_cast order
     float m_maxSpan = 0.0f;            // the largest such sphere's diameter

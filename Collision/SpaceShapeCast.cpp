@@ -193,18 +193,26 @@ void SimpleCollisionSpace::indexObstacles() {
             m_unbounded.push_back(int(j));
             continue;
         }
-        m_byLowX.emplace_back(lowX, int(j));
+        m_byLowX.push_back({lowX, int(j), c.origin.y - 0.5f * c.shift.y, c.origin.z - 0.5f * c.shift.z, r});
         m_maxSpan = std::max(m_maxSpan, 2.0f * r);
     }
     std::sort(m_byLowX.begin(), m_byLowX.end());
 }
 
-// Every geometry whose sphere can reach [lo, hi] along x, and the unbounded ones, in m_cast order (the order
-// a pass over all would meet them: ties in the time of impact resolve the same way).
+// Every geometry whose sphere can reach [lo, hi], and the unbounded ones, in m_cast order (the order a pass
+// over all would meet them: ties in the time of impact resolve the same way). The x order narrows the search
+// to a slab; y and z drop most of the slab (in a pile of 4,000 boxes the slab held a quarter of them, sorted
+// for every fast body). The test is looser than sweepOne's exact sphere test by a rounding margin, so it
+// never drops a sphere that test keeps.
 void SimpleCollisionSpace::gatherCandidates(const Vector& lo, const Vector& hi) {
     m_castCandidates.assign(m_unbounded.begin(), m_unbounded.end());
-    auto it = std::lower_bound(m_byLowX.begin(), m_byLowX.end(), std::make_pair(lo.x - m_maxSpan, -1));
-    for (; it != m_byLowX.end() && it->first <= hi.x; ++it) m_castCandidates.push_back(it->second);
+    auto it =
+        std::lower_bound(m_byLowX.begin(), m_byLowX.end(), ObstacleSphere{lo.x - m_maxSpan, -1, 0, 0, 0});
+    for (; it != m_byLowX.end() && it->lowX <= hi.x; ++it) {
+        const float r = it->r * 1.001f + 1e-6f * m_lengthUnit;
+        if (it->y + r < lo.y || it->y - r > hi.y || it->z + r < lo.z || it->z - r > hi.z) continue;
+        m_castCandidates.push_back(it->cast);
+    }
     std::sort(m_castCandidates.begin(), m_castCandidates.end());
 }
 
