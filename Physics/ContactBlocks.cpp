@@ -14,11 +14,6 @@ void setLane(Lanes3& l, int lane, const Vec3& v) {
     l.y.setLane(lane, v.y());
     l.z.setLane(lane, v.z());
 }
-void setLane(Lanes3& l, int lane, const Vec4& v) {
-    l.x.setLane(lane, v.x());
-    l.y.setLane(lane, v.y());
-    l.z.setLane(lane, v.z());
-}
 
 // The cross product in Eigen's order.
 Lanes3 cross(const Lanes3& a, const Lanes3& b) {
@@ -123,33 +118,15 @@ void ContactBlocks::fill(ContactBlock& block, int lane, Manifold& m, int index,
     block.invMassA.setLane(lane, a.invMass);
     block.invMassB.setLane(lane, b.invMass);
     block.frictionCoefficient.setLane(lane, m.friction);
-    block.biasRate.setLane(lane, m.biasRate);
-    block.massScale.setLane(lane, m.massScale);
-    block.impulseScale.setLane(lane, m.impulseScale);
-    const int rows = m.friction > 0.0f ? 3 : 1; // a frictionless lane's tangent rows stay zero
+    const bool friction = m.friction > 0.0f; // a frictionless lane's tangent rows and impulses stay zero
     for (int i = 0; i < m.count; ++i) {
         const ContactPoint& p = m.points[i];
         BlockPoint& q = block.p[i];
-        for (int r = 0; r < rows; ++r) {
-            BlockRow& row = q.row[r];
-            setLane(row.dir, lane, p.dir[r]);
-            setLane(row.armA, lane, p.armA[r]);
-            setLane(row.armB, lane, p.armB[r]);
-            setLane(row.turnA, lane, p.turnA[r]);
-            setLane(row.turnB, lane, p.turnB[r]);
-        }
-        q.row[0].mass.setLane(lane, p.normalMass);
-        if (rows == 3) {
-            q.row[1].mass.setLane(lane, p.tangentMass[0]);
-            q.row[2].mass.setLane(lane, p.tangentMass[1]);
-        }
         setLane(q.anchorA, lane, p.anchorA);
         setLane(q.anchorB, lane, p.anchorB);
         q.impulse[0].setLane(lane, p.normalImpulse);
-        q.impulse[1].setLane(lane, rows == 3 ? p.tangentImpulse[0] : Real(0));
-        q.impulse[2].setLane(lane, rows == 3 ? p.tangentImpulse[1] : Real(0));
-        q.maxNormal.setLane(lane, p.maxNormalImpulse);
-        q.approach.setLane(lane, p.approachSpeed);
+        q.impulse[1].setLane(lane, friction ? p.tangentImpulse[0] : Real(0));
+        q.impulse[2].setLane(lane, friction ? p.tangentImpulse[1] : Real(0));
     }
     m.lane = lane;
 }
@@ -192,6 +169,23 @@ void ContactBlocks::pack(std::vector<Manifold>& manifolds, const std::vector<Sol
     m_velocity[size_t(zero)] = Velocity{};
     m_pose.resize(bodies.size() + 1);
     m_pose[size_t(zero)] = Pose{{0, 0, 0, 1}, {0, 0, 0, 0}};
+}
+
+void ContactBlocks::setRow(const Manifold& m, int point, int row, const Row& r) {
+    BlockRow& x = at(m).p[point].row[row];
+    setLane(x.dir, m.lane, r.dir);
+    setLane(x.armA, m.lane, r.armA);
+    setLane(x.armB, m.lane, r.armB);
+    setLane(x.turnA, m.lane, r.turnA);
+    setLane(x.turnB, m.lane, r.turnB);
+    x.mass.setLane(m.lane, r.mass);
+}
+
+void ContactBlocks::setSoftness(const Manifold& m) {
+    ContactBlock& block = at(m);
+    block.biasRate.setLane(m.lane, m.biasRate);
+    block.massScale.setLane(m.lane, m.massScale);
+    block.impulseScale.setLane(m.lane, m.impulseScale);
 }
 
 void ContactBlocks::unpack(std::vector<Manifold>& manifolds) const {

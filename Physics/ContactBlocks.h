@@ -8,9 +8,9 @@
 // that share no movable body commute, so the wide sweep gives the very bits of the sequential one (the
 // committed determinism hashes did not change). Immovable bodies (the static world, fixed and kinematic
 // bodies) are read but never written, so any number of lanes may share one.
-// The rows themselves (directions, arms, effective masses) are worked out by ContactSolver::prepare; the
-// impulses live here from pack() to unpack() (the sub-steps), then go back to the manifolds for restitution,
-// projection and next step's warm start.
+// The rows themselves (directions, arms, effective masses) are worked out by ContactSolver::prepare into
+// the lanes pack() gave each manifold; the impulses live here from pack() to unpack() (the sub-steps), then
+// go back to the manifolds for restitution, projection and next step's warm start.
 #pragma once
 
 #include "ContactManifold.h"
@@ -54,8 +54,19 @@ public:
         Real touchOverlap, restitutionThreshold, maxPushSpeed;
     };
 
-    // Packs this step's manifolds, their rows prepared, and notes each one's block and lane in it.
+    // Packs this step's manifolds (their bodies, anchors and impulses), noting each one's block and lane.
     void pack(std::vector<Manifold>& manifolds, const std::vector<SolverBody>& bodies);
+    // A point's row (0 the normal, 1 and 2 the tangents) and its approach speed, worked out by
+    // ContactSolver::prepare after pack(); and a manifold's soft contact (Manifold::biasRate ...).
+    struct Row {
+        const Vec3 &dir, &armA, &armB, &turnA, &turnB;
+        Real mass;
+    };
+    void setRow(const Manifold& m, int point, int row, const Row& r);
+    void setApproach(const Manifold& m, int point, Real approach) {
+        at(m).p[point].approach.setLane(m.lane, approach);
+    }
+    void setSoftness(const Manifold& m);
     // Re-applies the accumulated impulses (an impact's only in the first sub-step).
     void warmStart(std::vector<SolverBody>& bodies, bool firstSubstep, Real impactSpeed);
     // One sweep: per manifold the normal impulses twice, friction, the normal impulses again. The velocity

@@ -53,14 +53,11 @@ struct ContactPoint {
     Vec3 point = Vec3::Zero(); // the contact point (world) at the step's start, midway between the two
     Vec3 rA = Vec3::Zero(), rB = Vec3::Zero(); // from each centre of mass to the contact (world), once known
     float depth = 0; // overlap as the detector reported it (the four deepest are kept)
-    // The constraint rows, for the normal (0) and the two tangents (1, 2), 4-wide: the direction, r x
-    // direction on each body, and I^-1 (r x direction), how an impulse along the direction turns each body.
-    Vec4 dir[3] = {Vec4::Zero(), Vec4::Zero(), Vec4::Zero()};
-    Vec4 armA[3] = {Vec4::Zero(), Vec4::Zero(), Vec4::Zero()},
-         armB[3] = {Vec4::Zero(), Vec4::Zero(), Vec4::Zero()};
-    Vec4 turnA[3] = {Vec4::Zero(), Vec4::Zero(), Vec4::Zero()},
-         turnB[3] = {Vec4::Zero(), Vec4::Zero(), Vec4::Zero()};
-    Real normalMass = 0, tangentMass[2] = {0, 0};
+    // The normal row (the solver's rows, tangents too, are in ContactBlocks.h; restitution and shock
+    // propagation use this one): r x n on each body, I^-1 (r x n), how an impulse along n turns each body,
+    // and the effective mass along n.
+    Vec3 armA = Vec3::Zero(), armB = Vec3::Zero(), turnA = Vec3::Zero(), turnB = Vec3::Zero();
+    Real normalMass = 0;
     Real normalImpulse = 0, tangentImpulse[2] = {0, 0}; // accumulated, per sub-step
     Real approachSpeed = 0;    // v_n when the solve began (negative: approaching), for restitution
     Real forceSpeed = 0;       // what this step's forces added to v_n (a_n dt)

@@ -53,7 +53,8 @@ void ContactSolver::buildManifolds(const CollisionContact* contacts, size_t coun
         PairKey key{c.g1, c.g2};
         const size_t* found = current.find(key);
         if (!found) {
-            Manifold m;
+            found = current.emplace(key, m_manifolds.size()).first;
+            Manifold& m = m_manifolds.emplace_back();
             m.g1 = c.g1;
             m.g2 = c.g2;
             m.rootA = rootA;
@@ -67,8 +68,6 @@ void ContactSolver::buildManifolds(const CollisionContact* contacts, size_t coun
             m.friction = combine(m_settings.friction, matA.friction, matB.friction);
             m.restitution = combine(m_settings.restitution, matA.restitution, matB.restitution);
             m.size = std::fmin(c.g1->getBoundingRadius(), c.g2->getBoundingRadius());
-            found = current.emplace(key, m_manifolds.size()).first;
-            m_manifolds.push_back(m);
         }
         Manifold& m = m_manifolds[*found];
         ContactPoint p;

@@ -30,7 +30,7 @@ namespace physics {
 
 // p's rows and approachSpeed (v_n after this step's forces) are set.
 void ContactSolver::prepareBounce(const SolverBody& a, const SolverBody& b, ContactPoint& p, Real dt) {
-    p.forceSpeed = p.normal.dot(b.dv - a.dv) + narrow(p.armB[0]).dot(b.dw) - narrow(p.armA[0]).dot(a.dw);
+    p.forceSpeed = p.normal.dot(b.dv - a.dv) + p.armB.dot(b.dw) - p.armA.dot(a.dw);
     const Real startSpeed = p.approachSpeed - 0.5f * p.forceSpeed;
     const Real startSeparation = p.normal.dot(startPoint(b, p.anchorB) - startPoint(a, p.anchorA));
     const Real accel = dt > 0.0f ? p.forceSpeed / dt : 0.0f;
@@ -67,9 +67,9 @@ void ContactSolver::applyRestitution() {
             const Real e = m.restitution;
             const Real leave2 = e * e * p.touchSpeed2 + 2.0f * accel * separation(a, b, p);
             const Real target = std::sqrt(std::max(Real(0), leave2)) - 0.5f * p.forceSpeed;
-            Real vn = relativeSpeed<0>(a, b, p);
+            Real vn = normalSpeed(a, b, p);
             Real total = std::max(Real(0), p.normalImpulse - p.normalMass * (vn - target));
-            applyImpulse<0>(a, b, p, total - p.normalImpulse);
+            applyNormalImpulse(a, b, p, total - p.normalImpulse);
             p.normalImpulse = total;
             p.bounced = true;
         }

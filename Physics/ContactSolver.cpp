@@ -123,9 +123,9 @@ void ContactSolver::solve(Real dt, const SolverBodyAccess& access) {
     m_h = h;
     m_jointSoft = softness(2.0f * 3.14159265f * std::min(Real(m_settings.jointHertz), 0.25f / h),
                            m_settings.jointDampingRatio, h);
+    m_blocks.pack(m_manifolds, m_bodies); // the rows and impulses live in the blocks until unpack
     prepare(dt, h);
     orderByLevel();
-    m_blocks.pack(m_manifolds, m_bodies); // the impulses live in the blocks until unpack
     splitForces();
     prepareJoints(h);
     for (int i = 0; i < n; ++i) {
@@ -184,6 +184,8 @@ ContactSolver::Softness ContactSolver::contactSoftness(const Manifold& m, Real h
     return omega > m_omega ? softness(omega, m_settings.dampingRatio, h) : m_soft;
 }
 
+// Each point's rows at the step's start (the normal and, with friction, the two tangents), written into its
+// lane of the blocks; the normal row is also kept with the point (restitution, shock propagation).
 void ContactSolver::prepare(Real dt, Real h) {
     for (Manifold& m : m_manifolds) {
         const SolverBody &a = m_bodies[m.a], &b = m_bodies[m.b];
@@ -191,28 +193,28 @@ void ContactSolver::prepare(Real dt, Real h) {
         m.biasRate = soft.biasRate;
         m.massScale = soft.massScale;
         m.impulseScale = soft.impulseScale;
+        m_blocks.setSoftness(m);
         const int rows = m.friction > 0.0f ? 3 : 1; // the normal row, and the two friction rows
         for (int i = 0; i < m.count; ++i) {
             ContactPoint& p = m.points[i];
             p.rA = p.point - a.com;
             p.rB = p.point - b.com;
-            Real masses[3] = {0, 0, 0};
             for (int row = 0; row < rows; ++row) {
                 const Vec3& d = row == 0 ? p.normal : p.tangent[row - 1];
                 const Vec3 armA = p.rA.cross(d), armB = p.rB.cross(d);
                 const Vec3 turnA = a.invInertia * armA, turnB = b.invInertia * armB;
-                p.dir[row] = wide(d);
-                p.armA[row] = wide(armA);
-                p.armB[row] = wide(armB);
-                p.turnA[row] = wide(turnA);
-                p.turnB[row] = wide(turnB);
-                Real k = a.invMass + b.invMass + armA.dot(turnA) + armB.dot(turnB);
-                masses[row] = k > 0.0f ? 1.0f / k : 0.0f;
+                const Real k = a.invMass + b.invMass + armA.dot(turnA) + armB.dot(turnB);
+                const Real mass = k > 0.0f ? 1.0f / k : 0.0f;
+                m_blocks.setRow(m, i, row, ContactBlocks::Row{d, armA, armB, turnA, turnB, mass});
+                if (row > 0) continue;
+                p.armA = armA;
+                p.armB = armB;
+                p.turnA = turnA;
+                p.turnB = turnB;
+                p.normalMass = mass;
             }
-            p.normalMass = masses[0];
-            p.tangentMass[0] = masses[1];
-            p.tangentMass[1] = masses[2];
-            p.approachSpeed = relativeSpeed<0>(a, b, p);
+            p.approachSpeed = normalSpeed(a, b, p);
+            m_blocks.setApproach(m, i, p.approachSpeed);
             p.maxNormalImpulse = 0;
             if (m.restitution > 0.0f) prepareBounce(a, b, p, dt); // read only by bouncing points
         }

@@ -104,10 +104,10 @@ void ContactSolver::propagateShock(Real h) {
             for (int i = 0; i < m.count; ++i) {
                 ContactPoint& p = m.points[i];
                 const Real gap = std::max(Real(0), separation(a, b, p));
-                const Real vn = relativeSpeed<0>(a, b, p);
+                const Real vn = normalSpeed(a, b, p);
                 if (vn >= -gap / h) continue;
-                const Vec3 arm = narrow(upperIsB ? p.armB[0] : p.armA[0]);
-                const Vec3 turn = narrow(upperIsB ? p.turnB[0] : p.turnA[0]);
+                const Vec3& arm = upperIsB ? p.armB : p.armA;
+                const Vec3& turn = upperIsB ? p.turnB : p.turnA;
                 const Real k = upper.invMass + arm.dot(turn);
                 if (!(k > 0.0f)) continue;
                 const Real impulse = (-gap / h - vn) / k; // raises v_n to -gap / h

@@ -1,5 +1,5 @@
-// SolverRows.h - the solver's inner-loop helpers, shared by its files: a contact row's direction, the
-// relative speed along it, an impulse along it, and where a body-local anchor is now.
+// SolverRows.h - helpers shared by the solver's files: the relative speed along a contact's normal, an
+// impulse along it, and where a body-local anchor is now.
 #pragma once
 
 #include "ContactManifold.h"
@@ -8,29 +8,17 @@ namespace physics {
 
 inline bool movable(const SolverBody& b) { return b.root && b.invMass > 0.0f; }
 
-// Row 0 is the normal, rows 1 and 2 the tangents; the row is a template argument so that the hot loops
-// compile without a branch per impulse.
-template <int Row> const Vec3& direction(const ContactPoint& p) {
-    if constexpr (Row == 0)
-        return p.normal;
-    else
-        return p.tangent[Row - 1];
+// The relative velocity of b against a at the point, along its normal.
+inline Real normalSpeed(const SolverBody& a, const SolverBody& b, const ContactPoint& p) {
+    return p.normal.dot(b.v - a.v) + p.armB.dot(b.w) - p.armA.dot(a.w);
 }
 
-// The relative velocity of b against a at the point, along a row's direction.
-template <int Row>
-inline Real relativeSpeed(const SolverBody& a, const SolverBody& b, const ContactPoint& p) {
-    return direction<Row>(p).dot(b.v - a.v) + narrow(p.armB[Row]).dot(b.w) - narrow(p.armA[Row]).dot(a.w);
-}
-
-// An impulse along a row's direction: on b, and its opposite on a.
-template <int Row>
-inline void applyImpulse(SolverBody& a, SolverBody& b, const ContactPoint& p, Real impulse) {
-    const Vec3& d = direction<Row>(p);
-    a.v -= (a.invMass * impulse) * d;
-    a.w -= impulse * narrow(p.turnA[Row]);
-    b.v += (b.invMass * impulse) * d;
-    b.w += impulse * narrow(p.turnB[Row]);
+// An impulse along the normal: on b, and its opposite on a.
+inline void applyNormalImpulse(SolverBody& a, SolverBody& b, const ContactPoint& p, Real impulse) {
+    a.v -= (a.invMass * impulse) * p.normal;
+    a.w -= impulse * p.turnA;
+    b.v += (b.invMass * impulse) * p.normal;
+    b.w += impulse * p.turnB;
 }
 
 // Where an anchor was at the step's start, where the contacts were found.
