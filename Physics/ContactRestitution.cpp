@@ -85,21 +85,26 @@ void ContactSolver::applyRestitution() {
 // late find can explain); deeper overlap that was not flown into (bodies spawned inside each other) is left
 // to the push out at its capped speed. Projecting all of it moved bodies of a crowd spawned at one point by
 // 7.8 m in one step.
-void ContactSolver::projectDeepOverlaps() {
+bool ContactSolver::projectDeepOverlaps() {
     for (Manifold& m : m_manifolds) {
         m.projectable = 0;
         for (int i = 0; i < m.count; ++i)
             m.projectable = std::max(m.projectable, -m.points[i].approachSpeed * m_dt);
     }
     bool moved = true;
+    float deepest = 0; // the overlap left, when a pass moves nothing (ContactSolver::measureOverlap)
     for (int iteration = 0; moved && iteration < kProjectionIterations; ++iteration) {
         moved = false;
+        deepest = 0;
         for (Manifold& m : m_manifolds) {
             const Real allowed = m.bounces ? -m_settings.bounceGap : m_settings.deepOverlap;
             SolverBody &a = m_bodies[m.a], &b = m_bodies[m.b];
             Real excess = 0;
-            for (int i = 0; i < m.count; ++i)
-                excess = std::max(excess, -separation(a, b, m.points[i]) - allowed);
+            for (int i = 0; i < m.count; ++i) {
+                const Real gap = separation(a, b, m.points[i]);
+                deepest = std::max(deepest, float(-gap));
+                excess = std::max(excess, -gap - allowed);
+            }
             excess = std::min(excess, m.projectable);
             Real invMass = a.invMass + b.invMass;
             if (excess <= 0.0f || invMass <= 0.0f) continue;
@@ -116,6 +121,9 @@ void ContactSolver::projectDeepOverlaps() {
             b.origin += b.invMass * push;
         }
     }
+    // A pass that moved nothing measured every point where the solve leaves it (restitution moves nothing).
+    if (!moved) m_maxDepthAfter = deepest;
+    return !moved;
 }
 
 } // namespace physics

@@ -146,13 +146,13 @@ void ContactSolver::solve(Real dt, const SolverBodyAccess& access) {
     }
     m_blocks.unpack(m_manifolds);
     findBounces();
-    projectDeepOverlaps();
+    const bool measured = projectDeepOverlaps();
     applyRestitution();
     for (const SolverBody& b : m_bodies) {
         access.storeVelocity(b);
         if (movable(b)) access.storePose(b);
     }
-    measureOverlap();
+    if (!measured) measureOverlap();
     storeImpulses();
 }
 

@@ -190,7 +190,7 @@ private:
     static void prepareBounce(const SolverBody& a, const SolverBody& b, ContactPoint& p, Real dt);
     void findBounces();
     void applyRestitution();
-    void projectDeepOverlaps();
+    bool projectDeepOverlaps(); // true when it measured the overlap left too (measureOverlap)
     void measureOverlap();
 
     SolverSettings m_settings;
