@@ -56,17 +56,12 @@ public:
 
     // Packs this step's manifolds (their bodies, anchors and impulses), noting each one's block and lane.
     void pack(std::vector<Manifold>& manifolds, const std::vector<SolverBody>& bodies);
-    // A point's row (0 the normal, 1 and 2 the tangents) and its approach speed, worked out by
-    // ContactSolver::prepare after pack(); and a manifold's soft contact (Manifold::biasRate ...).
-    struct Row {
-        const Vec3 &dir, &armA, &armB, &turnA, &turnB;
-        Real mass;
-    };
-    void setRow(const Manifold& m, int point, int row, const Row& r);
-    void setApproach(const Manifold& m, int point, Real approach) {
-        at(m).p[point].approach.setLane(m.lane, approach);
-    }
+    // A manifold's soft contact (Manifold::biasRate, massScale, impulseScale), set after pack().
     void setSoftness(const Manifold& m);
+    // Every point's rows at the step's start (ContactSolver::prepare, four lanes at a time): the normal and,
+    // with friction, the two tangents; each point keeps its normal row and approach speed too (restitution,
+    // shock propagation).
+    void prepare(std::vector<Manifold>& manifolds, const std::vector<SolverBody>& bodies);
     // Re-applies the accumulated impulses (an impact's only in the first sub-step).
     void warmStart(std::vector<SolverBody>& bodies, bool firstSubstep, Real impactSpeed);
     // One sweep: per manifold the normal impulses twice, friction, the normal impulses again. The velocity

@@ -184,37 +184,21 @@ ContactSolver::Softness ContactSolver::contactSoftness(const Manifold& m, Real h
     return omega > m_omega ? softness(omega, m_settings.dampingRatio, h) : m_soft;
 }
 
-// Each point's rows at the step's start (the normal and, with friction, the two tangents), written into its
-// lane of the blocks; the normal row is also kept with the point (restitution, shock propagation).
+// Each manifold's soft contact, then every point's rows at the step's start (the normal and, with friction,
+// the two tangents) in the blocks, four lanes at a time (ContactBlocks::prepare).
 void ContactSolver::prepare(Real dt, Real h) {
     for (Manifold& m : m_manifolds) {
-        const SolverBody &a = m_bodies[m.a], &b = m_bodies[m.b];
         const Softness soft = contactSoftness(m, h);
         m.biasRate = soft.biasRate;
         m.massScale = soft.massScale;
         m.impulseScale = soft.impulseScale;
         m_blocks.setSoftness(m);
-        const int rows = m.friction > 0.0f ? 3 : 1; // the normal row, and the two friction rows
+    }
+    m_blocks.prepare(m_manifolds, m_bodies);
+    for (Manifold& m : m_manifolds) {
+        const SolverBody &a = m_bodies[m.a], &b = m_bodies[m.b];
         for (int i = 0; i < m.count; ++i) {
             ContactPoint& p = m.points[i];
-            p.rA = p.point - a.com;
-            p.rB = p.point - b.com;
-            for (int row = 0; row < rows; ++row) {
-                const Vec3& d = row == 0 ? p.normal : p.tangent[row - 1];
-                const Vec3 armA = p.rA.cross(d), armB = p.rB.cross(d);
-                const Vec3 turnA = a.invInertia * armA, turnB = b.invInertia * armB;
-                const Real k = a.invMass + b.invMass + armA.dot(turnA) + armB.dot(turnB);
-                const Real mass = k > 0.0f ? 1.0f / k : 0.0f;
-                m_blocks.setRow(m, i, row, ContactBlocks::Row{d, armA, armB, turnA, turnB, mass});
-                if (row > 0) continue;
-                p.armA = armA;
-                p.armB = armB;
-                p.turnA = turnA;
-                p.turnB = turnB;
-                p.normalMass = mass;
-            }
-            p.approachSpeed = normalSpeed(a, b, p);
-            m_blocks.setApproach(m, i, p.approachSpeed);
             p.maxNormalImpulse = 0;
             if (m.restitution > 0.0f) prepareBounce(a, b, p, dt); // read only by bouncing points
         }

@@ -56,9 +56,10 @@ void expectSequentialOrder(const std::vector<Manifold>& manifolds, const std::ve
             EXPECT_TRUE(movableInBlock[m.block].insert(body).second)
                 << "block " << m.block << " holds body " << body << " twice";
             auto it = lastBlock.find(body);
-            if (it != lastBlock.end())
+            if (it != lastBlock.end()) {
                 EXPECT_LT(it->second, m.block)
                     << "body " << body << " meets manifold " << k << " out of order";
+            }
             lastBlock[body] = m.block;
         }
     }
