@@ -37,23 +37,42 @@ void ContactSolver::buildManifolds(const CollisionContact* contacts, size_t coun
     FlatMap<PairKey, size_t, PairKeyHash>& current = m_current;
     current.clear();
     m_maxDepthBefore = 0;
+    constexpr size_t kNone = ~size_t(0);
+    // A space lists a pair's contacts one after another: what holds for the pair is worked out at its first.
+    struct {
+        const iCollisionGeometry *g1 = nullptr, *g2 = nullptr;
+        iRigidBody *rb1 = nullptr, *rb2 = nullptr;
+        RBDynamics *rootA = nullptr, *rootB = nullptr;
+        bool skip = true;
+        size_t manifold = kNone; // its place in m_manifolds, once it has one
+    } pair;
     for (size_t i = 0; contacts && i < count; ++i) {
         const CollisionContact& c = contacts[i];
         if (!c.g1 || !c.g2) continue;
-        iRigidBody* rb1 = c.g1->getRigidBody();
-        iRigidBody* rb2 = c.g2->getRigidBody();
-        RBDynamics* rootA = rb1 ? rb1->getDynamics().attachmentRoot() : nullptr;
-        RBDynamics* rootB = rb2 ? rb2->getDynamics().attachmentRoot() : nullptr;
-        bool fixedA = !rootA || immovable(*rootA), fixedB = !rootB || immovable(*rootB);
-        if (rootA == rootB || (fixedA && fixedB) || joinedWithoutContact(rootA, rootB)) continue;
+        if (c.g1 != pair.g1 || c.g2 != pair.g2) {
+            pair.g1 = c.g1;
+            pair.g2 = c.g2;
+            pair.rb1 = c.g1->getRigidBody();
+            pair.rb2 = c.g2->getRigidBody();
+            pair.rootA = pair.rb1 ? pair.rb1->getDynamics().attachmentRoot() : nullptr;
+            pair.rootB = pair.rb2 ? pair.rb2->getDynamics().attachmentRoot() : nullptr;
+            const bool fixedA = !pair.rootA || immovable(*pair.rootA),
+                       fixedB = !pair.rootB || immovable(*pair.rootB);
+            pair.skip = pair.rootA == pair.rootB || (fixedA && fixedB) ||
+                        joinedWithoutContact(pair.rootA, pair.rootB);
+            const size_t* known = pair.skip ? nullptr : current.find(PairKey{c.g1, c.g2});
+            pair.manifold = known ? *known : kNone;
+        }
+        if (pair.skip) continue;
+        iRigidBody *rb1 = pair.rb1, *rb2 = pair.rb2;
+        RBDynamics *rootA = pair.rootA, *rootB = pair.rootB;
         Vec3 n = toEigen(c.normal);
         if (!n.allFinite() || n.squaredNorm() < 0.5f || !std::isfinite(c.depth)) continue;
         n.normalize();
 
-        PairKey key{c.g1, c.g2};
-        const size_t* found = current.find(key);
-        if (!found) {
-            found = current.emplace(key, m_manifolds.size()).first;
+        if (pair.manifold == kNone) {
+            pair.manifold = m_manifolds.size();
+            current.emplace(PairKey{c.g1, c.g2}, pair.manifold);
             Manifold& m = m_manifolds.emplace_back();
             m.g1 = c.g1;
             m.g2 = c.g2;
@@ -69,7 +88,7 @@ void ContactSolver::buildManifolds(const CollisionContact* contacts, size_t coun
             m.restitution = combine(m_settings.restitution, matA.restitution, matB.restitution);
             m.size = std::fmin(c.g1->getBoundingRadius(), c.g2->getBoundingRadius());
         }
-        Manifold& m = m_manifolds[*found];
+        Manifold& m = m_manifolds[pair.manifold];
         ContactPoint p;
         p.normal = n;
         tangentBasis(n, p.tangent);
