@@ -26,7 +26,8 @@ const wchar_t* checkOrientation(Matrix& o) {
 }
 } // namespace
 
-const wchar_t* checkDynamics(RBDynamics& d, const Matrix& knownInertia, const Matrix& knownInverse) {
+const wchar_t* checkDynamics(RBDynamics& d, const Matrix& knownInertia, const Matrix& knownInverse,
+                             const Matrix* const* knownRotations) {
     const Vector* vectors[] = {
         &d.position,       &d.velocity, &d.lastVelocity,    &d.acceleration, &d.force,
         &d.temporalForce,  &d.com,      &d.angularVelocity, &d.torque,       &d.temporalTorque,
@@ -43,7 +44,10 @@ const wchar_t* checkDynamics(RBDynamics& d, const Matrix& knownInertia, const Ma
     if (!(d.friction >= 0.0f && finite(d.friction))) return L"friction must be finite, >= 0";
     if (d.physicsType != PHYS_Falling && d.physicsType != PHYS_Floating && d.physicsType != PHYS_FixedInSpace)
         return L"physicsType is not a PhysicsType";
-    if (const wchar_t* why = checkOrientation(d.orientation)) return why;
+    const bool known =
+        knownRotations && (d.orientation == *knownRotations[0] || d.orientation == *knownRotations[1]);
+    if (!known)
+        if (const wchar_t* why = checkOrientation(d.orientation)) return why;
     if (d.getInertiaTensor() != knownInertia || d.getInverseInertiaTensor() != knownInverse) {
         // Edited through the reference: accept the pair if both are valid and they are each other's inverse,
         // or if the inverse is zero (rotation locked) and the tensor finite.

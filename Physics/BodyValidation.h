@@ -10,7 +10,10 @@ namespace physics {
 // rotation is cleaned in place with orthoNormalize (and a stray translation in the orientation's 4th row
 // and column is cleared); further from a rotation is invalid. knownInertia is the inertia tensor last
 // accepted: the expensive positive-definiteness check runs only when the tensor was changed through the
-// non-const getInertiaTensor() reference.
-const wchar_t* checkDynamics(RBDynamics& d, const Matrix& knownInertia, const Matrix& knownInverse);
+// non-const getInertiaTensor() reference. knownRotations (null, or two) are orientations known to be clean
+// rotations (the last one accepted, the last one the engine wrote): an orientation equal to either is not
+// checked again (the check was a tenth of a falling sphere's step).
+const wchar_t* checkDynamics(RBDynamics& d, const Matrix& knownInertia, const Matrix& knownInverse,
+                             const Matrix* const* knownRotations = nullptr);
 
 } // namespace physics

@@ -183,9 +183,15 @@ void RigidBody::adoptFrameEdits() {
 }
 
 bool RigidBody::validate(const char* when) {
+    // Orientations known to be rotations: the last one accepted, the last one the engine wrote (from a unit
+    // quaternion, or a locked body's accepted matrix).
+    const Matrix* clean[2] = {&m_checkedOrientation, &writtenOrientation};
     const wchar_t* why =
-        checkDynamics(m_dyn, m_lastValid.getInertiaTensor(), m_lastValid.getInverseInertiaTensor());
-    if (!why) return true;
+        checkDynamics(m_dyn, m_lastValid.getInertiaTensor(), m_lastValid.getInverseInertiaTensor(), clean);
+    if (!why) {
+        m_checkedOrientation = m_dyn.orientation;
+        return true;
+    }
     std::wstring msg = L"PhysicsScene: invalid rigid body state ";
     for (const char* c = when; *c; ++c) msg += wchar_t(*c);
     msg += L" (";

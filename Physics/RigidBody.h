@@ -211,6 +211,7 @@ private:
 
     RBDynamics m_dyn;
     RBDynamics m_lastValid;
+    Matrix m_checkedOrientation = Matrix(1); // the last orientation validate() accepted: a clean rotation
     struct Switches {
         bool rotationLocked = false, continuous = true, sleepAllowed = true;
         float gravityScale = 1.0f;
