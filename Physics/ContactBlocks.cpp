@@ -9,22 +9,22 @@ namespace physics {
 
 namespace {
 
-void setLane(Lanes3& l, int lane, const Vec3& v) {
+void setLanes3(Lanes3& l, int lane, const Vec3& v) {
     l.x.setLane(lane, v.x());
     l.y.setLane(lane, v.y());
     l.z.setLane(lane, v.z());
 }
 
 // The cross product in Eigen's order.
-Lanes3 cross(const Lanes3& a, const Lanes3& b) {
+Lanes3 crossLanes(const Lanes3& a, const Lanes3& b) {
     return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
 }
 
 // q v q^-1 as Eigen's Quaternion::_transformVector computes it.
-Lanes3 rotate(const Lanes3& qv, const Lanes& qw, const Lanes3& v) {
-    Lanes3 uv = cross(qv, v);
+Lanes3 rotateLanes(const Lanes3& qv, const Lanes& qw, const Lanes3& v) {
+    Lanes3 uv = crossLanes(qv, v);
     uv = uv + uv;
-    return (v + qw * uv) + cross(qv, uv);
+    return (v + qw * uv) + crossLanes(qv, uv);
 }
 
 // The velocities of a block's bodies, one lane each, and the rows of 4-Real slots they come from.
@@ -34,12 +34,12 @@ struct BlockVelocity {
 
 #if GUARDIAN_SSE_LANES
 // Four 4-Real rows (x, y, z, 0) as three Lanes of x, y and z.
-Lanes3 gather(const float* r0, const float* r1, const float* r2, const float* r3) {
+Lanes3 gatherRows(const float* r0, const float* r1, const float* r2, const float* r3) {
     __m128 a = _mm_load_ps(r0), b = _mm_load_ps(r1), c = _mm_load_ps(r2), d = _mm_load_ps(r3);
     _MM_TRANSPOSE4_PS(a, b, c, d);
     return Lanes3{Lanes(a), Lanes(b), Lanes(c)};
 }
-void scatter(const Lanes3& l, float* r0, float* r1, float* r2, float* r3) {
+void scatterRows(const Lanes3& l, float* r0, float* r1, float* r2, float* r3) {
     __m128 a = l.x.v(), b = l.y.v(), c = l.z.v(), d = _mm_setzero_ps();
     _MM_TRANSPOSE4_PS(a, b, c, d);
     _mm_store_ps(r0, a);
@@ -48,7 +48,7 @@ void scatter(const Lanes3& l, float* r0, float* r1, float* r2, float* r3) {
     _mm_store_ps(r3, d);
 }
 #else
-Lanes3 gather(const Real* r0, const Real* r1, const Real* r2, const Real* r3) {
+Lanes3 gatherRows(const Real* r0, const Real* r1, const Real* r2, const Real* r3) {
     const Real* rows[4] = {r0, r1, r2, r3};
     Lanes3 l;
     for (int i = 0; i < kLanes; ++i) {
@@ -58,7 +58,7 @@ Lanes3 gather(const Real* r0, const Real* r1, const Real* r2, const Real* r3) {
     }
     return l;
 }
-void scatter(const Lanes3& l, Real* r0, Real* r1, Real* r2, Real* r3) {
+void scatterRows(const Lanes3& l, Real* r0, Real* r1, Real* r2, Real* r3) {
     Real* rows[4] = {r0, r1, r2, r3};
     for (int i = 0; i < kLanes; ++i) {
         rows[i][0] = l.x.v[i];
@@ -70,13 +70,13 @@ void scatter(const Lanes3& l, Real* r0, Real* r1, Real* r2, Real* r3) {
 #endif
 
 // The relative speed of b against a along a row (sumOfDots' order).
-inline Lanes speed(const BlockRow& r, const BlockVelocity& u) {
+inline Lanes rowSpeed(const BlockRow& r, const BlockVelocity& u) {
     return (dot(r.dir, u.vb - u.va) + dot(r.armB, u.wb)) - dot(r.armA, u.wa);
 }
 
 // An impulse along a row: on b, and its opposite on a.
-inline void apply(const BlockRow& r, const Lanes& ima, const Lanes& imb, const Lanes& impulse,
-                  BlockVelocity& u) {
+inline void applyRow(const BlockRow& r, const Lanes& ima, const Lanes& imb, const Lanes& impulse,
+                     BlockVelocity& u) {
     u.va = u.va - (ima * impulse) * r.dir;
     u.wa = u.wa - impulse * r.turnA;
     u.vb = u.vb + (imb * impulse) * r.dir;
@@ -122,8 +122,8 @@ void ContactBlocks::fill(ContactBlock& block, int lane, Manifold& m, int index,
     for (int i = 0; i < m.count; ++i) {
         const ContactPoint& p = m.points[i];
         BlockPoint& q = block.p[i];
-        setLane(q.anchorA, lane, p.anchorA);
-        setLane(q.anchorB, lane, p.anchorB);
+        setLanes3(q.anchorA, lane, p.anchorA);
+        setLanes3(q.anchorB, lane, p.anchorB);
         q.impulse[0].setLane(lane, p.normalImpulse);
         q.impulse[1].setLane(lane, friction ? p.tangentImpulse[0] : Real(0));
         q.impulse[2].setLane(lane, friction ? p.tangentImpulse[1] : Real(0));
@@ -178,7 +178,7 @@ namespace {
 struct Lanes33 {
     Lanes3 row[3];
 };
-Lanes33 gatherMatrix(const Mat3* m[kLanes]) {
+Lanes33 gatherMatrices(const Mat3* m[kLanes]) {
     Lanes33 out;
     for (int l = 0; l < kLanes; ++l)
         for (int i = 0; i < 3; ++i) {
@@ -188,18 +188,18 @@ Lanes33 gatherMatrix(const Mat3* m[kLanes]) {
         }
     return out;
 }
-Lanes3 times(const Lanes33& m, const Lanes3& v) {
+Lanes3 timesLanes(const Lanes33& m, const Lanes3& v) {
     return {dot(m.row[0], v), dot(m.row[1], v), dot(m.row[2], v)};
 }
-Lanes3 gatherVector(const Vec3* v[kLanes]) {
+Lanes3 gatherVectors(const Vec3* v[kLanes]) {
     Lanes3 out;
-    for (int l = 0; l < kLanes; ++l) setLane(out, l, *v[l]);
+    for (int l = 0; l < kLanes; ++l) setLanes3(out, l, *v[l]);
     return out;
 }
-Lanes3 selectOf(LaneMask where, const Lanes3& yes, const Lanes3& no) {
+Lanes3 selectLanes3(LaneMask where, const Lanes3& yes, const Lanes3& no) {
     return {select(where, yes.x, no.x), select(where, yes.y, no.y), select(where, yes.z, no.z)};
 }
-void storeLane(const Lanes3& l, int lane, Vec3& out) {
+void storeLaneTo(const Lanes3& l, int lane, Vec3& out) {
     out = Vec3(l.x.lane(lane), l.y.lane(lane), l.z.lane(lane));
 }
 
@@ -228,10 +228,10 @@ void ContactBlocks::prepare(std::vector<Manifold>& manifolds, const std::vector<
             vb[l] = b ? &b->v : &zeroVector;
             wb[l] = b ? &b->w : &zeroVector;
         }
-        const Lanes33 invA = gatherMatrix(ia), invB = gatherMatrix(ib);
-        const Lanes3 comA = gatherVector(ca), comB = gatherVector(cb);
-        const Lanes3 velA = gatherVector(va), spinA = gatherVector(wa), velB = gatherVector(vb),
-                     spinB = gatherVector(wb);
+        const Lanes33 invA = gatherMatrices(ia), invB = gatherMatrices(ib);
+        const Lanes3 comA = gatherVectors(ca), comB = gatherVectors(cb);
+        const Lanes3 velA = gatherVectors(va), spinA = gatherVectors(wa), velB = gatherVectors(vb),
+                     spinB = gatherVectors(wb);
         const LaneMask friction = less(zero, block.frictionCoefficient);
         const Lanes baseK = block.invMassA + block.invMassB;
         for (int i = 0; i < block.points; ++i) {
@@ -248,23 +248,23 @@ void ContactBlocks::prepare(std::vector<Manifold>& manifolds, const std::vector<
                 if (here) presence.setLane(l, 1);
             }
             const LaneMask present = less(zero, presence);
-            const Lanes3 at = gatherVector(point);
+            const Lanes3 at = gatherVectors(point);
             const Lanes3 rA = at - comA, rB = at - comB;
             BlockPoint& q = block.p[i];
             for (int r = 0; r < 3; ++r) {
                 if (r > 0 && !block.friction) break;
-                const Lanes3 d = gatherVector(dirs[r]);
-                const Lanes3 armA = cross(rA, d), armB = cross(rB, d);
-                const Lanes3 turnA = times(invA, armA), turnB = times(invB, armB);
+                const Lanes3 d = gatherVectors(dirs[r]);
+                const Lanes3 armA = crossLanes(rA, d), armB = crossLanes(rB, d);
+                const Lanes3 turnA = timesLanes(invA, armA), turnB = timesLanes(invB, armB);
                 const Lanes k = (baseK + dot(armA, turnA)) + dot(armB, turnB);
                 const LaneMask keep = r == 0 ? present : andMask(present, friction);
                 const Lanes mass = select(andMask(keep, less(zero, k)), one / k, zero);
                 BlockRow& row = q.row[r];
-                row.dir = selectOf(keep, d, Lanes3{});
-                row.armA = selectOf(keep, armA, Lanes3{});
-                row.armB = selectOf(keep, armB, Lanes3{});
-                row.turnA = selectOf(keep, turnA, Lanes3{});
-                row.turnB = selectOf(keep, turnB, Lanes3{});
+                row.dir = selectLanes3(keep, d, Lanes3{});
+                row.armA = selectLanes3(keep, armA, Lanes3{});
+                row.armB = selectLanes3(keep, armB, Lanes3{});
+                row.turnA = selectLanes3(keep, turnA, Lanes3{});
+                row.turnB = selectLanes3(keep, turnB, Lanes3{});
                 row.mass = mass;
             }
             const BlockRow& n = q.row[0];
@@ -273,12 +273,12 @@ void ContactBlocks::prepare(std::vector<Manifold>& manifolds, const std::vector<
                 const int k = block.manifold[l];
                 if (k < 0 || i >= manifolds[size_t(k)].count) continue;
                 ContactPoint& p = manifolds[size_t(k)].points[i];
-                storeLane(rA, l, p.rA);
-                storeLane(rB, l, p.rB);
-                storeLane(n.armA, l, p.armA);
-                storeLane(n.armB, l, p.armB);
-                storeLane(n.turnA, l, p.turnA);
-                storeLane(n.turnB, l, p.turnB);
+                storeLaneTo(rA, l, p.rA);
+                storeLaneTo(rB, l, p.rB);
+                storeLaneTo(n.armA, l, p.armA);
+                storeLaneTo(n.armB, l, p.armB);
+                storeLaneTo(n.turnA, l, p.turnA);
+                storeLaneTo(n.turnB, l, p.turnB);
                 p.normalMass = n.mass.lane(l);
                 p.approachSpeed = q.approach.lane(l);
             }
@@ -347,18 +347,18 @@ void ContactBlocks::measureGaps(ContactBlock& block) const {
         a[l] = &m_pose[size_t(std::min(block.read[0][l], int(m_pose.size()) - 1))];
         b[l] = &m_pose[size_t(std::min(block.read[1][l], int(m_pose.size()) - 1))];
     }
-    const Lanes3 qa = gather(a[0]->q, a[1]->q, a[2]->q, a[3]->q);
-    const Lanes3 qb = gather(b[0]->q, b[1]->q, b[2]->q, b[3]->q);
+    const Lanes3 qa = gatherRows(a[0]->q, a[1]->q, a[2]->q, a[3]->q);
+    const Lanes3 qb = gatherRows(b[0]->q, b[1]->q, b[2]->q, b[3]->q);
     Lanes qwa, qwb;
     for (int l = 0; l < kLanes; ++l) {
         qwa.setLane(l, a[l]->q[3]);
         qwb.setLane(l, b[l]->q[3]);
     }
-    const Lanes3 oa = gather(a[0]->origin, a[1]->origin, a[2]->origin, a[3]->origin);
-    const Lanes3 ob = gather(b[0]->origin, b[1]->origin, b[2]->origin, b[3]->origin);
+    const Lanes3 oa = gatherRows(a[0]->origin, a[1]->origin, a[2]->origin, a[3]->origin);
+    const Lanes3 ob = gatherRows(b[0]->origin, b[1]->origin, b[2]->origin, b[3]->origin);
     for (int i = 0; i < block.points; ++i) {
         BlockPoint& q = block.p[i];
-        const Lanes3 pa = rotate(qa, qwa, q.anchorA) + oa, pb = rotate(qb, qwb, q.anchorB) + ob;
+        const Lanes3 pa = rotateLanes(qa, qwa, q.anchorA) + oa, pb = rotateLanes(qb, qwb, q.anchorB) + ob;
         q.gap = dot(q.row[0].dir, pb - pa);
     }
 }
@@ -371,10 +371,10 @@ void ContactBlocks::warmStart(std::vector<SolverBody>& bodies, bool firstSubstep
     for (ContactBlock& block : m_blocks) {
         Velocity* u = m_velocity.data();
         const int *ra = block.read[0], *rb = block.read[1];
-        BlockVelocity vel{gather(u[ra[0]].v, u[ra[1]].v, u[ra[2]].v, u[ra[3]].v),
-                          gather(u[ra[0]].w, u[ra[1]].w, u[ra[2]].w, u[ra[3]].w),
-                          gather(u[rb[0]].v, u[rb[1]].v, u[rb[2]].v, u[rb[3]].v),
-                          gather(u[rb[0]].w, u[rb[1]].w, u[rb[2]].w, u[rb[3]].w)};
+        BlockVelocity vel{gatherRows(u[ra[0]].v, u[ra[1]].v, u[ra[2]].v, u[ra[3]].v),
+                          gatherRows(u[ra[0]].w, u[ra[1]].w, u[ra[2]].w, u[ra[3]].w),
+                          gatherRows(u[rb[0]].v, u[rb[1]].v, u[rb[2]].v, u[rb[3]].v),
+                          gatherRows(u[rb[0]].w, u[rb[1]].w, u[rb[2]].w, u[rb[3]].w)};
         for (int i = 0; i < block.points; ++i) {
             BlockPoint& q = block.p[i];
             if (!firstSubstep) { // an impact does not recur: its point starts the later sub-steps from
@@ -382,16 +382,16 @@ void ContactBlocks::warmStart(std::vector<SolverBody>& bodies, bool firstSubstep
                 const LaneMask fast = less(q.approach, impact);
                 for (int r = 0; r < 3; ++r) q.impulse[r] = select(fast, zero, q.impulse[r]);
             }
-            apply(q.row[0], block.invMassA, block.invMassB, q.impulse[0], vel);
+            applyRow(q.row[0], block.invMassA, block.invMassB, q.impulse[0], vel);
             if (!block.friction) continue;
-            apply(q.row[1], block.invMassA, block.invMassB, q.impulse[1], vel);
-            apply(q.row[2], block.invMassA, block.invMassB, q.impulse[2], vel);
+            applyRow(q.row[1], block.invMassA, block.invMassB, q.impulse[1], vel);
+            applyRow(q.row[2], block.invMassA, block.invMassB, q.impulse[2], vel);
         }
         const int *wa = block.write[0], *wb = block.write[1];
-        scatter(vel.va, u[wa[0]].v, u[wa[1]].v, u[wa[2]].v, u[wa[3]].v);
-        scatter(vel.wa, u[wa[0]].w, u[wa[1]].w, u[wa[2]].w, u[wa[3]].w);
-        scatter(vel.vb, u[wb[0]].v, u[wb[1]].v, u[wb[2]].v, u[wb[3]].v);
-        scatter(vel.wb, u[wb[0]].w, u[wb[1]].w, u[wb[2]].w, u[wb[3]].w);
+        scatterRows(vel.va, u[wa[0]].v, u[wa[1]].v, u[wa[2]].v, u[wa[3]].v);
+        scatterRows(vel.wa, u[wa[0]].w, u[wa[1]].w, u[wa[2]].w, u[wa[3]].w);
+        scatterRows(vel.vb, u[wb[0]].v, u[wb[1]].v, u[wb[2]].v, u[wb[3]].v);
+        scatterRows(vel.wb, u[wb[0]].w, u[wb[1]].w, u[wb[2]].w, u[wb[3]].w);
     }
     storeVelocities(bodies);
 }
@@ -423,18 +423,18 @@ void ContactBlocks::solve(std::vector<SolverBody>& bodies, const Sweep& sweep) {
         }
         Velocity* u = m_velocity.data();
         const int *ra = block.read[0], *rb = block.read[1];
-        BlockVelocity vel{gather(u[ra[0]].v, u[ra[1]].v, u[ra[2]].v, u[ra[3]].v),
-                          gather(u[ra[0]].w, u[ra[1]].w, u[ra[2]].w, u[ra[3]].w),
-                          gather(u[rb[0]].v, u[rb[1]].v, u[rb[2]].v, u[rb[3]].v),
-                          gather(u[rb[0]].w, u[rb[1]].w, u[rb[2]].w, u[rb[3]].w)};
+        BlockVelocity vel{gatherRows(u[ra[0]].v, u[ra[1]].v, u[ra[2]].v, u[ra[3]].v),
+                          gatherRows(u[ra[0]].w, u[ra[1]].w, u[ra[2]].w, u[ra[3]].w),
+                          gatherRows(u[rb[0]].v, u[rb[1]].v, u[rb[2]].v, u[rb[3]].v),
+                          gatherRows(u[rb[0]].w, u[rb[1]].w, u[rb[2]].w, u[rb[3]].w)};
         auto solveNormal = [&]() {
             for (int i = 0; i < block.points; ++i) {
                 BlockPoint& q = block.p[i];
-                const Lanes vn = speed(q.row[0], vel);
+                const Lanes vn = rowSpeed(q.row[0], vel);
                 const Lanes change =
                     (-q.row[0].mass) * massScale[i] * (vn + bias[i]) - impulseScale[i] * q.impulse[0];
                 const Lanes total = maxOf(zero, q.impulse[0] + change); // push only, never pull
-                apply(q.row[0], block.invMassA, block.invMassB, total - q.impulse[0], vel);
+                applyRow(q.row[0], block.invMassA, block.invMassB, total - q.impulse[0], vel);
                 q.impulse[0] = total;
                 q.maxNormal = maxOf(q.maxNormal, total);
             }
@@ -447,17 +447,17 @@ void ContactBlocks::solve(std::vector<SolverBody>& bodies, const Sweep& sweep) {
                 const Lanes limit = block.frictionCoefficient * q.impulse[0], lower = -limit;
                 for (int r = 1; r < 3; ++r) {
                     const Lanes total =
-                        clampOf(q.impulse[r] - speed(q.row[r], vel) * q.row[r].mass, lower, limit);
-                    apply(q.row[r], block.invMassA, block.invMassB, total - q.impulse[r], vel);
+                        clampOf(q.impulse[r] - rowSpeed(q.row[r], vel) * q.row[r].mass, lower, limit);
+                    applyRow(q.row[r], block.invMassA, block.invMassB, total - q.impulse[r], vel);
                     q.impulse[r] = total;
                 }
             }
         solveNormal();
         const int *wa = block.write[0], *wb = block.write[1];
-        scatter(vel.va, u[wa[0]].v, u[wa[1]].v, u[wa[2]].v, u[wa[3]].v);
-        scatter(vel.wa, u[wa[0]].w, u[wa[1]].w, u[wa[2]].w, u[wa[3]].w);
-        scatter(vel.vb, u[wb[0]].v, u[wb[1]].v, u[wb[2]].v, u[wb[3]].v);
-        scatter(vel.wb, u[wb[0]].w, u[wb[1]].w, u[wb[2]].w, u[wb[3]].w);
+        scatterRows(vel.va, u[wa[0]].v, u[wa[1]].v, u[wa[2]].v, u[wa[3]].v);
+        scatterRows(vel.wa, u[wa[0]].w, u[wa[1]].w, u[wa[2]].w, u[wa[3]].w);
+        scatterRows(vel.vb, u[wb[0]].v, u[wb[1]].v, u[wb[2]].v, u[wb[3]].v);
+        scatterRows(vel.wb, u[wb[0]].w, u[wb[1]].w, u[wb[2]].w, u[wb[3]].w);
     }
     storeVelocities(bodies);
 }
