@@ -60,16 +60,15 @@ public:
 
     // --- bookkeeping owned by the space the geometry is in ---
     struct SpaceState {
-        bool hasPrevious = false;   // previous pose valid (continuous sampling)
-        bool reportedBad = false;   // the non-finite pose has been reported once
-        bool pendingDelete = false; // Delete() called during listener notification
-        bool pendingRemove = false; // remove() called during listener notification
-        const iRigidBody* previousBody = nullptr;
+        bool hasPrevious = false;       // previous pose valid (continuous sampling)
+        bool reportedBad = false;       // the non-finite pose has been reported once
+        bool pendingDelete = false;     // Delete() called during listener notification
+        bool pendingRemove = false;     // remove() called during listener notification
         unsigned previousTeleports = 0; // the body's (and its root's) RBDynamics::teleports then
-        unsigned long long call = 0;    // the space's populate call that last gathered it
-        int entry = -1;                 // its entry in the space (SimpleCollisionSpace::Entry), once laid out
-        unsigned long long order = 0;   // when it joined the space (increasing along the space's list)
-        int proxy = -1;                 // its broadphase proxy, if the space's broadphase keeps one
+        const iRigidBody* previousBody = nullptr;
+        int entry = -1;               // its entry in the space (SimpleCollisionSpace::Entry), once laid out
+        int proxy = -1;               // its broadphase proxy, if the space's broadphase keeps one
+        unsigned long long order = 0; // when it joined the space (increasing along the space's list)
         Vector previousOrigin;
         Matrix previousRotation = Matrix(1);
     };
@@ -103,12 +102,13 @@ protected:
 
 private:
     friend class SimpleCollisionSpace; // deletes geometry whose Delete() it deferred
+    // (What a space reads every call first, beside the space state's flags.)
     iRigidBody* m_body = nullptr;
-    iCollisionSpace* m_space = nullptr;
-    SpaceState m_state;
     unsigned m_shapeVersion = 0;
     std::uint32_t m_layer = 1, m_mask = ~std::uint32_t(0);
     bool m_sensor = false;
+    SpaceState m_state;
+    iCollisionSpace* m_space = nullptr;
     static void onBodyDestroyed(const iRigidBody* dying, void* self);
 };
 

@@ -258,12 +258,15 @@ bool SimpleCollisionSpace::gatherEntry(Entry& e, bool continuous) {
         return false;
     }
     const bool usePrevious = continuous && samePath;
+    if (!same) c.prevIsSelf = false;
     if (usePrevious && !prevIsPose) {
         e.prevOrigin = st.previousOrigin;
         e.prevRotation = st.previousRotation;
-    } else {
+        c.prevIsSelf = false;
+    } else if (!c.prevIsSelf) {
         e.prevOrigin = e.origin;
         e.prevRotation = e.rotation;
+        c.prevIsSelf = true;
     }
     e.rotAngle = 0.0f;
     e.motion = 0.0f;
@@ -280,8 +283,12 @@ bool SimpleCollisionSpace::gatherEntry(Entry& e, bool continuous) {
         e.motion = (e.origin - e.prevOrigin).length() + e.rotAngle * c.bound;
         e.moved = e.motion > 0.25f * e.minDim;
     }
+    if (!e.moved) {
+        if (!sameBits(e.box, c.tight)) e.box = c.tight;
+        return true;
+    }
     e.box = c.tight;
-    if (e.moved) {
+    {
         // Swept bounds: both end poses, inflated by how far rotation can carry a point off that path.
         m_scratchA.clear();
         g->worldShapes(e.prevOrigin, e.prevRotation, m_scratchA);
@@ -387,7 +394,6 @@ void SimpleCollisionSpace::gatherEntries(bool continuous) {
         const bool was = e.active;
         const gcol::Aabb box = e.box;
         e.active = gatherEntry(e, continuous);
-        if (e.active) e.g->spaceState().call = m_call;
         if (e.active != was || (e.active && !e.plane && !sameBits(box, e.box))) m_changed.push_back(i);
     }
 }

@@ -112,34 +112,37 @@ public:
     // Per-geometry working state, one per member in the members' order (m_entries[i] is m_members[i]'s, and
     // SpaceState::entry names it), kept between calls: a geometry whose pose, shapes and body did not change
     // since the last call keeps its shapes and box (SimpleCollisionSpace.cpp, gatherEntry).
-    struct Entry {
+    // (Laid out for the call where little changed: what every call reads comes first, in two cache lines;
+    // the pose and the previous pose only when the body moved.)
+    struct alignas(64) Entry {
         CollisionGeometry* g = nullptr;
         iRigidBody* body = nullptr;
         bool active = true; // gathered this call; an inactive one (no body, a pose not finite) is in no pair
         bool fixed = false, plane = false, moved = false; // fixed: resting and not moved since last call
-        unsigned teleports = 0;                           // RBDynamics::teleports of the body and its root
-        Vector origin, prevOrigin;
-        Matrix rotation = Matrix(1), prevRotation = Matrix(1);
-        float motion = 0.0f;     // upper bound on how far any point of it moved since the previous call
-        float rotAngle = 0.0f;   // rotation since the previous call (radians)
-        float minDim = 0.0f;     // smallest dimension of its shapes
-        int first = 0, last = 0; // its shapes in m_shapes
-        std::uint32_t layer = 1, mask = ~std::uint32_t(0); // its collision filter (iCollisionFilter.h)
         bool sensor = false;
-        gcol::Aabb box; // swept over the motion when moved
-        // What the shapes and boxes above were made from (the space's; a broadphase ignores it).
+        unsigned teleports = 0;                            // RBDynamics::teleports of the body and its root
+        std::uint32_t layer = 1, mask = ~std::uint32_t(0); // its collision filter (iCollisionFilter.h)
+        float motion = 0.0f;   // upper bound on how far any point of it moved since the previous call
+        float rotAngle = 0.0f; // rotation since the previous call (radians)
+        float minDim = 0.0f;   // smallest dimension of its shapes
+        gcol::Aabb box;        // swept over the motion when moved
+        // What the shapes and boxes were made from (the space's; a broadphase ignores it).
         struct Cache {
             bool valid = false; // shapes, tight, minDim and bound hold for origin, rotation, version, body
-            bool raw = false;   // the body has no parent and rawPosition.. are its pose inputs then
+            bool raw = false;   // the body has no parent, and rawPosition.. are its pose inputs then
             bool prevIsPose = false;  // SpaceState::previous* were last written from origin and rotation
             bool prevCurrent = false; // this call: SpaceState::previous* hold origin and rotation already
+            bool prevIsSelf = false;  // prevOrigin and prevRotation are origin and rotation, bit for bit
             bool selfAngleKnown = false;
             unsigned shapeVersion = 0;
-            int capacity = 0;                     // shapes m_shapes holds for it from first on
             float bound = 0.0f, selfAngle = 0.0f; // bounding radius; rotationAngle(rotation, rotation)
-            gcol::Aabb tight;                     // its shapes' box at the pose
             Vector rawPosition, rawCom, rawRows[3];
+            gcol::Aabb tight; // its shapes' box at the pose
+            int capacity = 0; // shapes m_shapes holds for it from first on
         } cache;
+        int first = 0, last = 0; // its shapes in m_shapes
+        Vector origin, prevOrigin;
+        Matrix rotation = Matrix(1), prevRotation = Matrix(1);
     };
     // One touching geometry pair, as listeners hear of it.
     struct Notice {
