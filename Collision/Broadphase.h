@@ -7,10 +7,10 @@
 // (Entry::box, swept over the motion) overlap, plus every active plane with every active bounded entry, each
 // once as (i, j) with i < j (entry indices), in the order they are to be tested. Two broadphases may differ
 // in that order, never in the set: the space's contacts are the same set whichever runs. The list is the
-// broadphase's own, valid until its next call. changed names the entries whose box or activity may differ
-// from the previous call's (an entry not named is as it was: its box, activity and index); nullptr means
-// any may, and the entries may be new ones (a broadphase then looks at every entry). A call where nothing
-// changed may return the previous list as it is. The query candidates are a superset of the
+// broadphase's own storage, valid until its next call. changed names the entries whose box or activity may
+// differ from the previous call's (an entry not named is as it was: its box, activity and index); nullptr
+// means any may, and the entries may be new ones (a broadphase then looks at every entry). A call where
+// nothing changed may return the previous list as it is. The query candidates are a superset of the
 // geometries whose shapes at their current pose meet the query: the space tests each exactly.
 #pragma once
 
@@ -22,10 +22,17 @@
 class Broadphase {
 public:
     using EntryPair = std::pair<int, int>;
+    struct PairList {
+        const EntryPair* first = nullptr;
+        size_t count = 0;
+        const EntryPair* begin() const { return first; }
+        const EntryPair* end() const { return first + count; }
+        size_t size() const { return count; }
+    };
     virtual ~Broadphase() = default;
 
-    virtual const std::vector<EntryPair>& findPairs(const std::vector<SimpleCollisionSpace::Entry>& entries,
-                                                    const std::vector<int>* changed) = 0;
+    virtual PairList findPairs(const std::vector<SimpleCollisionSpace::Entry>& entries,
+                               const std::vector<int>* changed) = 0;
     // Geometries of all (the space's members) that may meet box at their current pose, or the segment origin
     // + t * dir (0 <= t <= maxT), in the order of all.
     virtual void overlapCandidates(const std::vector<CollisionGeometry*>& all, const gcol::Aabb& box,

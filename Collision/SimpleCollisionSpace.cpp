@@ -140,10 +140,36 @@ void grow(gcol::Aabb& box, const gcol::Aabb& other) {
 
 namespace {
 
-bool sameBits(const Vector& a, const Vector& b) { return std::memcmp(&a, &b, sizeof(Vector)) == 0; }
-bool sameBits(const Matrix& a, const Matrix& b) { return std::memcmp(&a, &b, sizeof(Matrix)) == 0; }
-bool sameBits(const gcol::Aabb& a, const gcol::Aabb& b) {
-    return std::memcmp(&a, &b, sizeof(gcol::Aabb)) == 0;
+// Bit for bit (so -0 is not 0, and equal bits are equal values: poses here are finite).
+template <size_t N> bool sameWords(const void* a, const void* b) {
+    std::uint32_t x[N], y[N];
+    std::memcpy(x, a, sizeof x);
+    std::memcpy(y, b, sizeof y);
+    std::uint32_t diff = 0;
+    for (size_t i = 0; i < N; ++i) diff |= x[i] ^ y[i];
+    return diff == 0;
+}
+bool sameBits(const Vector& a, const Vector& b) { return sameWords<3>(&a, &b); }
+bool sameBits(const Matrix& a, const Matrix& b) { return sameWords<16>(&a, &b); }
+bool sameBits(const gcol::Aabb& a, const gcol::Aabb& b) { return sameWords<6>(&a, &b); }
+
+// gcol::shapeAabb of a bounded shape, the box's case written out: boxProjectedRadius along a world axis is
+// h.x |axis[0] . e| + h.y |axis[1] . e| + h.z |axis[2] . e|, and for finite axes |axis . e_x| is exactly
+// |axis.x| (the other products are zeros, which leave a sum as it is but for the sign of a zero, and fabs
+// drops that). The same bits, without the multiplications by 0 and 1.
+void shapeBounds(const gcol::WorldShape& s, gcol::Aabb& out) {
+    if (s.kind != gcol::ShapeKind::Box) {
+        gcol::shapeAabb(s, out);
+        return;
+    }
+    const gcol::BoxShape& b = s.box;
+    const Vector& h = b.halfExtents;
+    const Vector &a0 = b.axis[0], &a1 = b.axis[1], &a2 = b.axis[2];
+    const Vector e(h.x * std::fabs(a0.x) + h.y * std::fabs(a1.x) + h.z * std::fabs(a2.x),
+                   h.x * std::fabs(a0.y) + h.y * std::fabs(a1.y) + h.z * std::fabs(a2.y),
+                   h.x * std::fabs(a0.z) + h.y * std::fabs(a1.z) + h.z * std::fabs(a2.z));
+    out.min = b.centre - e;
+    out.max = b.centre + e;
 }
 
 // A body without a parent is at a pose made from its position, the rotation rows of its orientation and
@@ -152,9 +178,19 @@ bool sameBits(const gcol::Aabb& a, const gcol::Aabb& b) {
 const float* row(const Matrix& m, int i) { return m.data() + 4 * i; }
 bool sameRaw(const SimpleCollisionSpace::Entry::Cache& c, const RBDynamics& d) {
     return sameBits(c.rawPosition, d.position) && sameBits(c.rawCom, d.com) &&
-           std::memcmp(&c.rawRows[0], row(d.orientation, 0), sizeof(Vector)) == 0 &&
-           std::memcmp(&c.rawRows[1], row(d.orientation, 1), sizeof(Vector)) == 0 &&
-           std::memcmp(&c.rawRows[2], row(d.orientation, 2), sizeof(Vector)) == 0;
+           sameWords<3>(&c.rawRows[0], row(d.orientation, 0)) &&
+           sameWords<3>(&c.rawRows[1], row(d.orientation, 1)) &&
+           sameWords<3>(&c.rawRows[2], row(d.orientation, 2));
+}
+// CollisionGeometry::currentPose of a geometry on d, a body without a parent: the same operations on the
+// same inputs (RBDynamics::getWorldOrigin, getWorldOrientation), without the copies.
+bool rawPose(const RBDynamics& d, Vector& origin, Matrix& rotation) {
+    const Vector o = d.position - d.orientation.direction(d.com);
+    const Matrix r = d.orientation.rotation();
+    if (!o.isFinite() || !r.isFinite()) return false;
+    origin = o;
+    rotation = r;
+    return true;
 }
 void storeRaw(SimpleCollisionSpace::Entry::Cache& c, const RBDynamics& d) {
     c.rawPosition = d.position;
@@ -175,7 +211,7 @@ void SimpleCollisionSpace::placeShapes(Entry& e) {
         m_shapes.insert(m_shapes.end(), m_newShapes.begin(), m_newShapes.end());
         if (m_shapeWaste > m_shapes.size() / 2) m_layoutDirty = true; // compacted at the next call
     } else {
-        std::copy(m_newShapes.begin(), m_newShapes.end(), m_shapes.begin() + e.first);
+        for (int i = 0; i < n; ++i) m_shapes[size_t(e.first + i)] = m_newShapes[size_t(i)];
     }
     e.last = e.first + n;
 }
@@ -204,7 +240,7 @@ bool SimpleCollisionSpace::gatherEntry(Entry& e, bool continuous) {
     if (!(same && c.raw && root == d && sameRaw(c, *d))) {
         Vector origin;
         Matrix rotation(1);
-        if (!g->currentPose(origin, rotation)) {
+        if (!(d && root == d ? rawPose(*d, origin, rotation) : g->currentPose(origin, rotation))) {
             if (!st.reportedBad)
                 error(
                     L"SimpleCollisionSpace: a body's position or orientation is not finite; its geometry is "
@@ -239,16 +275,20 @@ bool SimpleCollisionSpace::gatherEntry(Entry& e, bool continuous) {
         m_newShapes.clear();
         g->worldShapes(e.origin, e.rotation, m_newShapes);
         placeShapes(e);
-        e.minDim = g->minDimension();
+        if (!c.sized || c.sizedVersion != version || e.plane) { // sizes follow the shapes alone
+            e.minDim = g->minDimension();
+            if (!e.plane) c.bound = g->asInterface()->getBoundingRadius();
+            c.sized = !e.plane;
+            c.sizedVersion = version;
+        }
         c.shapeVersion = version;
         c.selfAngleKnown = false;
         c.valid = !e.plane;
         if (!e.plane && e.first != e.last) {
-            c.bound = g->asInterface()->getBoundingRadius();
-            gcol::shapeAabb(m_shapes[size_t(e.first)], c.tight);
+            shapeBounds(m_shapes[size_t(e.first)], c.tight);
             for (int i = e.first + 1; i < e.last; ++i) {
                 gcol::Aabb b;
-                gcol::shapeAabb(m_shapes[size_t(i)], b);
+                shapeBounds(m_shapes[size_t(i)], b);
                 grow(c.tight, b);
             }
         }
@@ -263,7 +303,7 @@ bool SimpleCollisionSpace::gatherEntry(Entry& e, bool continuous) {
         e.prevOrigin = st.previousOrigin;
         e.prevRotation = st.previousRotation;
         c.prevIsSelf = false;
-    } else if (!c.prevIsSelf) {
+    } else if (!c.prevIsSelf && continuous) { // (without sampling nothing reads the previous pose)
         e.prevOrigin = e.origin;
         e.prevRotation = e.rotation;
         c.prevIsSelf = true;
@@ -323,9 +363,11 @@ void SimpleCollisionSpace::populateContactList(float delta) {
     const bool continuous = delta > 0.0f && std::isfinite(delta) && m_samplesPerSecond > 0;
     gatherEntries(continuous);
     // Candidate pairs (planes first: when the contact budget fills, the ground is the last thing to lose).
-    m_pairs = &m_broadphase->findPairs(m_entries, m_relaid ? nullptr : &m_changed);
+    const Broadphase::PairList pairs = m_broadphase->findPairs(m_entries, m_relaid ? nullptr : &m_changed);
+    m_pairs = pairs.first;
+    m_pairCount = pairs.count;
     const float stepDelta = continuous ? delta : 0.0f;
-    for (const std::pair<int, int>& p : *m_pairs)
+    for (const std::pair<int, int>& p : pairs)
         testPair(m_entries[size_t(p.first)], m_entries[size_t(p.second)], stepDelta);
     if (m_droppedPairs > 0 && !m_reportedDrops) {
         m_reportedDrops = true;
@@ -402,8 +444,10 @@ size_t SimpleCollisionSpace::findCandidatePairs() {
     if (m_notifying || m_populating) return 0;
     ++m_call;
     gatherEntries(false);
-    m_pairs = &m_broadphase->findPairs(m_entries, m_relaid ? nullptr : &m_changed);
-    return m_pairs->size();
+    const Broadphase::PairList pairs = m_broadphase->findPairs(m_entries, m_relaid ? nullptr : &m_changed);
+    m_pairs = pairs.first;
+    m_pairCount = pairs.count;
+    return m_pairCount;
 }
 
 bool SimpleCollisionSpace::setContactBudget(size_t maxContacts) {

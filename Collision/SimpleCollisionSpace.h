@@ -134,14 +134,15 @@ public:
             bool prevCurrent = false; // this call: SpaceState::previous* hold origin and rotation already
             bool prevIsSelf = false;  // prevOrigin and prevRotation are origin and rotation, bit for bit
             bool selfAngleKnown = false;
-            unsigned shapeVersion = 0;
+            bool sized = false; // minDim and bound hold for sizedVersion
+            unsigned shapeVersion = 0, sizedVersion = 0;
             float bound = 0.0f, selfAngle = 0.0f; // bounding radius; rotationAngle(rotation, rotation)
             Vector rawPosition, rawCom, rawRows[3];
             gcol::Aabb tight; // its shapes' box at the pose
             int capacity = 0; // shapes m_shapes holds for it from first on
         } cache;
-        int first = 0, last = 0; // its shapes in m_shapes
-        Vector origin, prevOrigin;
+        int first = 0, last = 0;   // its shapes in m_shapes
+        Vector origin, prevOrigin; // the previous pose: set (and read) only in a call with sampling on
         Matrix rotation = Matrix(1), prevRotation = Matrix(1);
     };
     // One touching geometry pair, as listeners hear of it.
@@ -238,8 +239,10 @@ private:
     size_t m_shapeWaste = 0;   // shapes in m_shapes no entry owns
     // Scratch reused between calls.
     std::vector<gcol::WorldShape> m_newShapes, m_scratchA, m_scratchB;
-    const std::vector<std::pair<int, int>>* m_pairs = nullptr; // this call's candidate pairs, in test order
-    std::vector<CollisionGeometry*> m_candidates;              // a query's
+    const std::pair<int, int>* m_pairs =
+        nullptr; // this call's candidate pairs, in test order (the broadphase's)
+    size_t m_pairCount = 0;
+    std::vector<CollisionGeometry*> m_candidates; // a query's
     std::vector<Notice> m_notices;  // this call's touching pairs, then the resting ones carried over
     std::vector<Notice> m_touching; // the pairs touching at the last call
     std::vector<Notice> m_held;     // pairs that touched since the last delivery (events held)

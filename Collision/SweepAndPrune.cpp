@@ -35,12 +35,11 @@ void SweepAndPrune::sortAfresh(const std::vector<SimpleCollisionSpace::Entry>& e
     }
 }
 
-const std::vector<Broadphase::EntryPair>&
-SweepAndPrune::findPairs(const std::vector<SimpleCollisionSpace::Entry>& entries,
-                         const std::vector<int>* changed) {
+Broadphase::PairList SweepAndPrune::findPairs(const std::vector<SimpleCollisionSpace::Entry>& entries,
+                                              const std::vector<int>* changed) {
     bool afresh = !changed || m_place.size() != entries.size();
     if (!afresh) {
-        if (changed->empty()) return m_out; // nothing changed: the same pairs
+        if (changed->empty()) return {m_out.data(), m_out.size()}; // nothing changed: the same pairs
         for (int i : *changed) {
             const SimpleCollisionSpace::Entry& e = entries[size_t(i)];
             const int place = m_place[size_t(i)];
@@ -87,7 +86,7 @@ SweepAndPrune::findPairs(const std::vector<SimpleCollisionSpace::Entry>& entries
                 m_out.emplace_back(std::min(m_order[oi], m_order[oj]), std::max(m_order[oi], m_order[oj]));
         }
     }
-    return m_out;
+    return {m_out.data(), m_out.size()};
 }
 
 void SweepAndPrune::overlapCandidates(const std::vector<CollisionGeometry*>& all, const gcol::Aabb&,

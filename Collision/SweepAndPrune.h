@@ -12,8 +12,8 @@
 
 class SweepAndPrune final : public Broadphase {
 public:
-    const std::vector<EntryPair>& findPairs(const std::vector<SimpleCollisionSpace::Entry>& entries,
-                                            const std::vector<int>* changed) override;
+    PairList findPairs(const std::vector<SimpleCollisionSpace::Entry>& entries,
+                       const std::vector<int>* changed) override;
     void overlapCandidates(const std::vector<CollisionGeometry*>& all, const gcol::Aabb& box,
                            std::vector<CollisionGeometry*>& out) override;
     void rayCandidates(const std::vector<CollisionGeometry*>& all, const Vector& origin, const Vector& dir,

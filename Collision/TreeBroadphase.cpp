@@ -173,9 +173,8 @@ void TreeBroadphase::listEntries(const std::vector<SimpleCollisionSpace::Entry>&
         if (entries[size_t(i)].active) (entries[size_t(i)].plane ? m_planes : m_bounded).push_back(i);
 }
 
-const std::vector<Broadphase::EntryPair>&
-TreeBroadphase::findPairs(const std::vector<SimpleCollisionSpace::Entry>& entries,
-                          const std::vector<int>* changed) {
+Broadphase::PairList TreeBroadphase::findPairs(const std::vector<SimpleCollisionSpace::Entry>& entries,
+                                               const std::vector<int>* changed) {
     ++m_stamp;
     // Every entry is looked at when they may be new ones, or when queries moved proxies since the last call
     // (a proxy they made or refitted may belong to no entry, or its fat box may have left its entry's box).
@@ -208,19 +207,30 @@ TreeBroadphase::findPairs(const std::vector<SimpleCollisionSpace::Entry>& entrie
     }
     const bool pairs = !m_moveBuffer.empty() || !m_dead.empty();
     updatePairs();
-    if (!lists && !boxes && !pairs) return m_out; // nothing changed: the same pairs
-    m_out.clear();
+    if (!lists && !boxes && !pairs) return {m_out.data(), m_outCount}; // nothing changed: the same pairs
+    const size_t most = m_planes.size() * m_bounded.size() + m_pairs.size();
+    if (m_out.size() < most) m_out.resize(most);
+    EntryPair* out = m_out.data();
+    size_t n = 0;
     for (int p : m_planes)
-        for (int i : m_bounded) m_out.emplace_back(std::min(p, i), std::max(p, i));
+        for (int i : m_bounded) out[n++] = EntryPair(std::min(p, i), std::max(p, i));
+    // Every kept pair is written and kept when it touches, without a branch that goes either way: a pair
+    // whose boxes did not change keeps the answer it had.
+    const unsigned stamp = m_stamp;
     for (Pair& pr : m_pairs) {
         const Exact& a = m_exact[size_t(pr.a)];
         const Exact& b = m_exact[size_t(pr.b)];
-        if (pr.touching < 0 || a.changed == m_stamp || b.changed == m_stamp)
-            pr.touching = gcol::overlaps(a.box, b.box) ? 1 : 0;
-        if (pr.touching) m_out.emplace_back(std::min(a.entry, b.entry), std::max(a.entry, b.entry));
+        const bool overlap = (a.box.min.x <= b.box.max.x) & (a.box.max.x >= b.box.min.x) &
+                             (a.box.min.y <= b.box.max.y) & (a.box.max.y >= b.box.min.y) &
+                             (a.box.min.z <= b.box.max.z) & (a.box.max.z >= b.box.min.z); // gcol::overlaps
+        const bool retest = (pr.touching < 0) | (a.changed == stamp) | (b.changed == stamp);
+        pr.touching = retest ? int(overlap) : pr.touching;
+        out[n] = EntryPair(std::min(a.entry, b.entry), std::max(a.entry, b.entry));
+        n += size_t(pr.touching);
     }
+    m_outCount = n;
     m_outValid = true;
-    return m_out;
+    return {m_out.data(), m_outCount};
 }
 
 void TreeBroadphase::updatePairs() {

@@ -31,8 +31,8 @@ public:
     static constexpr float kMargin = 0.1f;   // m (times the length unit), fat box margin on every side
     static constexpr size_t kBulkMoves = 64; // this many moved, and a quarter of all: one rebuild
 
-    const std::vector<EntryPair>& findPairs(const std::vector<SimpleCollisionSpace::Entry>& entries,
-                                            const std::vector<int>* changed) override;
+    PairList findPairs(const std::vector<SimpleCollisionSpace::Entry>& entries,
+                       const std::vector<int>* changed) override;
     void overlapCandidates(const std::vector<CollisionGeometry*>& all, const gcol::Aabb& box,
                            std::vector<CollisionGeometry*>& out) override;
     void rayCandidates(const std::vector<CollisionGeometry*>& all, const Vector& origin, const Vector& dir,
@@ -96,8 +96,9 @@ private:
 
     gcol::DynamicTree m_tree;
     std::vector<Proxy> m_proxies;
-    std::vector<Exact> m_exact; // per proxy
-    std::vector<EntryPair> m_out;
+    std::vector<Exact> m_exact;   // per proxy
+    std::vector<EntryPair> m_out; // its first m_outCount are this call's pairs (it never shrinks)
+    size_t m_outCount = 0;
     bool m_outValid = false;
     std::vector<int> m_freeProxies, m_dead;
     std::vector<int> m_moveBuffer;
