@@ -112,7 +112,7 @@ public:
     // Per-geometry working state, one per member in the members' order (m_entries[i] is m_members[i]'s, and
     // SpaceState::entry names it), kept between calls: a geometry whose pose, shapes and body did not change
     // since the last call keeps its shapes and box (SimpleCollisionSpace.cpp, gatherEntry).
-    // (Laid out for the call where little changed: what every call reads comes first, in two cache lines;
+    // (Laid out for the call where little changed: what every call reads comes first, in three cache lines;
     // the pose and the previous pose only when the body moved.)
     struct alignas(64) Entry {
         CollisionGeometry* g = nullptr;
