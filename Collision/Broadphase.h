@@ -3,10 +3,14 @@
 // events, the budget) runs with sort-and-sweep (SweepAndPrune.h, the simple space) or with a persistent
 // dynamic tree (TreeBroadphase.h, the octree space).
 //
-// Contract: findPairs lists exactly the pairs of this call's entries whose boxes (Entry::box, swept over the
-// motion) overlap, plus every plane with every bounded entry, each once as (i, j) with i < j (entry
-// indices), in the order they are to be tested. Two broadphases may differ in that order, never in the set:
-// the space's contacts are the same set whichever runs. The query candidates are a superset of the
+// Contract: findPairs lists exactly the pairs of this call's active entries (Entry::active) whose boxes
+// (Entry::box, swept over the motion) overlap, plus every active plane with every active bounded entry, each
+// once as (i, j) with i < j (entry indices), in the order they are to be tested. Two broadphases may differ
+// in that order, never in the set: the space's contacts are the same set whichever runs. The list is the
+// broadphase's own storage, valid until its next call. changed names the entries whose box or activity may
+// differ from the previous call's (an entry not named is as it was: its box, activity and index); nullptr
+// means any may, and the entries may be new ones (a broadphase then looks at every entry). A call where
+// nothing changed may return the previous list as it is. The query candidates are a superset of the
 // geometries whose shapes at their current pose meet the query: the space tests each exactly.
 #pragma once
 
@@ -18,10 +22,17 @@
 class Broadphase {
 public:
     using EntryPair = std::pair<int, int>;
+    struct PairList {
+        const EntryPair* first = nullptr;
+        size_t count = 0;
+        const EntryPair* begin() const { return first; }
+        const EntryPair* end() const { return first + count; }
+        size_t size() const { return count; }
+    };
     virtual ~Broadphase() = default;
 
-    virtual void findPairs(const std::vector<SimpleCollisionSpace::Entry>& entries,
-                           std::vector<EntryPair>& out) = 0;
+    virtual PairList findPairs(const std::vector<SimpleCollisionSpace::Entry>& entries,
+                               const std::vector<int>* changed) = 0;
     // Geometries of all (the space's members) that may meet box at their current pose, or the segment origin
     // + t * dir (0 <= t <= maxT), in the order of all.
     virtual void overlapCandidates(const std::vector<CollisionGeometry*>& all, const gcol::Aabb& box,

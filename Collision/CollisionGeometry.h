@@ -40,12 +40,13 @@ public:
     virtual ShapeMass shapeMass() const { return ShapeMass(); }
 
     // iCollisionFilter: plain values, read by the space at its next populateContactList.
-    void setLayer(std::uint32_t layerBits) override { m_layer = layerBits; }
-    std::uint32_t getLayer() const override { return m_layer; }
-    void setMask(std::uint32_t maskBits) override { m_mask = maskBits; }
-    std::uint32_t getMask() const override { return m_mask; }
-    void setSensor(bool sensor) override { m_sensor = sensor; }
-    bool isSensor() const override { return m_sensor; }
+    // (final: a space reads them for every geometry every call, without a virtual call.)
+    void setLayer(std::uint32_t layerBits) final { m_layer = layerBits; }
+    std::uint32_t getLayer() const final { return m_layer; }
+    void setMask(std::uint32_t maskBits) final { m_mask = maskBits; }
+    std::uint32_t getMask() const final { return m_mask; }
+    void setSensor(bool sensor) final { m_sensor = sensor; }
+    bool isSensor() const final { return m_sensor; }
     // A clone filters as its original does.
     void copyFilter(const CollisionGeometry& from) {
         m_layer = from.m_layer;
@@ -59,16 +60,15 @@ public:
 
     // --- bookkeeping owned by the space the geometry is in ---
     struct SpaceState {
-        bool hasPrevious = false;   // previous pose valid (continuous sampling)
-        bool reportedBad = false;   // the non-finite pose has been reported once
-        bool pendingDelete = false; // Delete() called during listener notification
-        bool pendingRemove = false; // remove() called during listener notification
-        const iRigidBody* previousBody = nullptr;
+        bool hasPrevious = false;       // previous pose valid (continuous sampling)
+        bool reportedBad = false;       // the non-finite pose has been reported once
+        bool pendingDelete = false;     // Delete() called during listener notification
+        bool pendingRemove = false;     // remove() called during listener notification
         unsigned previousTeleports = 0; // the body's (and its root's) RBDynamics::teleports then
-        unsigned long long call = 0;    // the space's populate call that last gathered it ...
-        int entry = -1;                 // ... and its entry there
-        unsigned long long order = 0;   // when it joined the space (increasing along the space's list)
-        int proxy = -1;                 // its broadphase proxy, if the space's broadphase keeps one
+        const iRigidBody* previousBody = nullptr;
+        int entry = -1;               // its entry in the space (SimpleCollisionSpace::Entry), once laid out
+        int proxy = -1;               // its broadphase proxy, if the space's broadphase keeps one
+        unsigned long long order = 0; // when it joined the space (increasing along the space's list)
         Vector previousOrigin;
         Matrix previousRotation = Matrix(1);
     };
@@ -102,12 +102,13 @@ protected:
 
 private:
     friend class SimpleCollisionSpace; // deletes geometry whose Delete() it deferred
+    // (What a space reads every call first, beside the space state's flags.)
     iRigidBody* m_body = nullptr;
-    iCollisionSpace* m_space = nullptr;
-    SpaceState m_state;
     unsigned m_shapeVersion = 0;
     std::uint32_t m_layer = 1, m_mask = ~std::uint32_t(0);
     bool m_sensor = false;
+    SpaceState m_state;
+    iCollisionSpace* m_space = nullptr;
     static void onBodyDestroyed(const iRigidBody* dying, void* self);
 };
 

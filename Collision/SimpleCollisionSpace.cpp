@@ -13,6 +13,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 
 SimpleCollisionSpace::SimpleCollisionSpace(size_t samplesPerSecond, std::unique_ptr<Broadphase> broadphase)
     : m_samplesPerSecond(samplesPerSecond), m_broadphase(std::move(broadphase)) {
@@ -49,6 +50,7 @@ bool SimpleCollisionSpace::add(iCollisionGeometry* o) {
     g->spaceState() = CollisionGeometry::SpaceState();
     g->spaceState().order = ++m_joined;
     ++m_membership;
+    m_layoutDirty = true;
     return true;
 }
 
@@ -71,6 +73,7 @@ void SimpleCollisionSpace::remove(iCollisionGeometry* o) {
 
 void SimpleCollisionSpace::removeNow(CollisionGeometry* g) {
     ++m_membership;
+    m_layoutDirty = true;
     m_geometry.remove(g->asInterface());
     m_members.erase(std::find(m_members.begin(), m_members.end(), g));
     m_broadphase->forget(g);
@@ -135,63 +138,197 @@ void grow(gcol::Aabb& box, const gcol::Aabb& other) {
 
 } // namespace
 
-bool SimpleCollisionSpace::gatherEntry(CollisionGeometry* g, bool continuous, Entry& e) {
+namespace {
+
+// Bit for bit (so -0 is not 0, and equal bits are equal values: poses here are finite).
+template <size_t N> bool sameWords(const void* a, const void* b) {
+    std::uint32_t x[N], y[N];
+    std::memcpy(x, a, sizeof x);
+    std::memcpy(y, b, sizeof y);
+    std::uint32_t diff = 0;
+    for (size_t i = 0; i < N; ++i) diff |= x[i] ^ y[i];
+    return diff == 0;
+}
+bool sameBits(const Vector& a, const Vector& b) { return sameWords<3>(&a, &b); }
+bool sameBits(const Matrix& a, const Matrix& b) { return sameWords<16>(&a, &b); }
+bool sameBits(const gcol::Aabb& a, const gcol::Aabb& b) { return sameWords<6>(&a, &b); }
+
+// gcol::shapeAabb of a bounded shape, the box's case written out: boxProjectedRadius along a world axis is
+// h.x |axis[0] . e| + h.y |axis[1] . e| + h.z |axis[2] . e|, and for finite axes |axis . e_x| is exactly
+// |axis.x| (the other products are zeros, which leave a sum as it is but for the sign of a zero, and fabs
+// drops that). The same bits, without the multiplications by 0 and 1.
+void shapeBounds(const gcol::WorldShape& s, gcol::Aabb& out) {
+    if (s.kind != gcol::ShapeKind::Box) {
+        gcol::shapeAabb(s, out);
+        return;
+    }
+    const gcol::BoxShape& b = s.box;
+    const Vector& h = b.halfExtents;
+    const Vector &a0 = b.axis[0], &a1 = b.axis[1], &a2 = b.axis[2];
+    const Vector e(h.x * std::fabs(a0.x) + h.y * std::fabs(a1.x) + h.z * std::fabs(a2.x),
+                   h.x * std::fabs(a0.y) + h.y * std::fabs(a1.y) + h.z * std::fabs(a2.y),
+                   h.x * std::fabs(a0.z) + h.y * std::fabs(a1.z) + h.z * std::fabs(a2.z));
+    out.min = b.centre - e;
+    out.max = b.centre + e;
+}
+
+// A body without a parent is at a pose made from its position, the rotation rows of its orientation and
+// its centre of mass alone (RBDynamics::getWorldOrigin, getWorldOrientation): the same inputs, bit for bit,
+// give the same pose.
+const float* row(const Matrix& m, int i) { return m.data() + 4 * i; }
+bool sameRaw(const SimpleCollisionSpace::Entry::Cache& c, const RBDynamics& d) {
+    return sameBits(c.rawPosition, d.position) && sameBits(c.rawCom, d.com) &&
+           sameWords<3>(&c.rawRows[0], row(d.orientation, 0)) &&
+           sameWords<3>(&c.rawRows[1], row(d.orientation, 1)) &&
+           sameWords<3>(&c.rawRows[2], row(d.orientation, 2));
+}
+// CollisionGeometry::currentPose of a geometry on d, a body without a parent: the same operations on the
+// same inputs (RBDynamics::getWorldOrigin, getWorldOrientation), without the copies.
+bool rawPose(const RBDynamics& d, Vector& origin, Matrix& rotation) {
+    const Vector o = d.position - d.orientation.direction(d.com);
+    const Matrix r = d.orientation.rotation();
+    if (!o.isFinite() || !r.isFinite()) return false;
+    origin = o;
+    rotation = r;
+    return true;
+}
+void storeRaw(SimpleCollisionSpace::Entry::Cache& c, const RBDynamics& d) {
+    c.rawPosition = d.position;
+    c.rawCom = d.com;
+    for (int i = 0; i < 3; ++i)
+        c.rawRows[i] = Vector(row(d.orientation, i)[0], row(d.orientation, i)[1], row(d.orientation, i)[2]);
+}
+
+} // namespace
+
+// e's shapes are m_newShapes now: in its room in m_shapes, or at the end when they no longer fit.
+void SimpleCollisionSpace::placeShapes(Entry& e) {
+    const int n = int(m_newShapes.size());
+    if (n > e.cache.capacity) {
+        m_shapeWaste += size_t(e.cache.capacity);
+        e.first = int(m_shapes.size());
+        e.cache.capacity = n;
+        m_shapes.insert(m_shapes.end(), m_newShapes.begin(), m_newShapes.end());
+        if (m_shapeWaste > m_shapes.size() / 2) m_layoutDirty = true; // compacted at the next call
+    } else {
+        for (int i = 0; i < n; ++i) m_shapes[size_t(e.first + i)] = m_newShapes[size_t(i)];
+    }
+    e.last = e.first + n;
+}
+
+// Brings e up to date with its geometry: false when the geometry takes no part in this call. A geometry
+// whose body pose (origin, rotation), shape version and body are as at the last call keeps its shapes, box,
+// sizes and bounding radius; the rest (filter, resting, teleports, the previous pose and motion) is read
+// every call.
+bool SimpleCollisionSpace::gatherEntry(Entry& e, bool continuous) {
+    CollisionGeometry* g = e.g;
     CollisionGeometry::SpaceState& st = g->spaceState();
-    e.g = g;
-    e.body = g->body();
+    Entry::Cache& c = e.cache;
+    iRigidBody* body = g->body();
     e.layer = g->getLayer();
     e.mask = g->getMask();
     e.sensor = g->isSensor();
-    e.plane = g->isPlane();
-    if (!e.body && !e.plane) {
+    if (!body && !e.plane) {
         st.hasPrevious = false;
+        c.prevIsPose = false;
         return false;
     }
-    if (!g->currentPose(e.origin, e.rotation)) {
-        if (!st.reportedBad)
-            error(L"SimpleCollisionSpace: a body's position or orientation is not finite; its geometry is "
-                  L"skipped until it is");
-        st.reportedBad = true;
-        st.hasPrevious = false;
-        return false;
+    const RBDynamics* d = body ? &body->getDynamics() : nullptr;
+    const RBDynamics* root = d ? d->attachmentRoot() : nullptr;
+    const unsigned version = g->shapeVersion();
+    bool same = c.valid && e.body == body && c.shapeVersion == version; // never for a plane
+    if (!(same && c.raw && root == d && sameRaw(c, *d))) {
+        Vector origin;
+        Matrix rotation(1);
+        if (!(d && root == d ? rawPose(*d, origin, rotation) : g->currentPose(origin, rotation))) {
+            if (!st.reportedBad)
+                error(
+                    L"SimpleCollisionSpace: a body's position or orientation is not finite; its geometry is "
+                    L"skipped until it is");
+            st.reportedBad = true;
+            st.hasPrevious = false;
+            c.valid = c.prevIsPose = false;
+            return false;
+        }
+        same = same && sameBits(origin, e.origin) && sameBits(rotation, e.rotation);
+        e.origin = origin;
+        e.rotation = rotation;
+        c.raw = d && root == d;
+        if (c.raw) storeRaw(c, *d);
     }
     st.reportedBad = false;
-    const RBDynamics* root = e.body ? e.body->getDynamics().attachmentRoot() : nullptr;
-    e.teleports =
-        root ? root->teleports + (root != &e.body->getDynamics() ? e.body->getDynamics().teleports : 0) : 0;
+    e.body = body;
+    e.teleports = root ? root->teleports + (root != d ? d->teleports : 0) : 0;
     // The pose of the previous call, unless the body is new here or was teleported since (never swept).
-    const bool samePath = st.hasPrevious && st.previousBody == e.body && st.previousTeleports == e.teleports;
+    const bool samePath = st.hasPrevious && st.previousBody == body && st.previousTeleports == e.teleports;
     // Resting bodies (fixed in space, or asleep) that did not move: a pair of two of them needs no test. One
     // the game moved (a platform, a lift) is tested, so it can push and wake what rests on it.
     const bool resting = !root || root->physicsType == PHYS_FixedInSpace || root->sleeping;
-    const bool movedSinceLastCall = st.hasPrevious && st.previousBody == e.body &&
+    if (!same) c.prevIsPose = false;
+    // The previous pose is this pose, bit for bit (known without comparing).
+    const bool prevIsPose = c.prevIsPose && st.hasPrevious && st.previousBody == body;
+    const bool movedSinceLastCall = st.hasPrevious && st.previousBody == body && !prevIsPose &&
                                     (st.previousOrigin != e.origin || st.previousRotation != e.rotation);
     e.fixed = resting && !movedSinceLastCall;
-    e.first = int(m_shapes.size());
-    g->worldShapes(e.origin, e.rotation, m_shapes);
-    e.last = int(m_shapes.size());
-    if (e.first == e.last) return false; // an empty compound
-    bool usePrevious = continuous && samePath;
-    e.prevOrigin = usePrevious ? st.previousOrigin : e.origin;
-    e.prevRotation = usePrevious ? st.previousRotation : e.rotation;
-    e.minDim = g->minDimension();
+    c.prevCurrent = prevIsPose;
+    if (!same) {
+        m_newShapes.clear();
+        g->worldShapes(e.origin, e.rotation, m_newShapes);
+        placeShapes(e);
+        if (!c.sized || c.sizedVersion != version || e.plane) { // sizes follow the shapes alone
+            e.minDim = g->minDimension();
+            if (!e.plane) c.bound = g->asInterface()->getBoundingRadius();
+            c.sized = !e.plane;
+            c.sizedVersion = version;
+        }
+        c.shapeVersion = version;
+        c.selfAngleKnown = false;
+        c.valid = !e.plane;
+        if (!e.plane && e.first != e.last) {
+            shapeBounds(m_shapes[size_t(e.first)], c.tight);
+            for (int i = e.first + 1; i < e.last; ++i) {
+                gcol::Aabb b;
+                shapeBounds(m_shapes[size_t(i)], b);
+                grow(c.tight, b);
+            }
+        }
+    }
+    if (e.first == e.last) { // an empty compound
+        c.prevIsPose = false;
+        return false;
+    }
+    const bool usePrevious = continuous && samePath;
+    if (!same) c.prevIsSelf = false;
+    if (usePrevious && !prevIsPose) {
+        e.prevOrigin = st.previousOrigin;
+        e.prevRotation = st.previousRotation;
+        c.prevIsSelf = false;
+    } else if (!c.prevIsSelf && continuous) { // (without sampling nothing reads the previous pose)
+        e.prevOrigin = e.origin;
+        e.prevRotation = e.rotation;
+        c.prevIsSelf = true;
+    }
     e.rotAngle = 0.0f;
     e.motion = 0.0f;
     e.moved = false;
     if (e.plane) return true; // infinite: no bounds, and nothing passes through a plane unseen
-    float bound = g->asInterface()->getBoundingRadius();
     if (usePrevious) {
-        e.rotAngle = rotationAngle(e.prevRotation, e.rotation);
-        e.motion = (e.origin - e.prevOrigin).length() + e.rotAngle * bound;
+        if (prevIsPose) {
+            if (!c.selfAngleKnown) c.selfAngle = rotationAngle(e.rotation, e.rotation);
+            c.selfAngleKnown = true;
+            e.rotAngle = c.selfAngle;
+        } else {
+            e.rotAngle = rotationAngle(e.prevRotation, e.rotation);
+        }
+        e.motion = (e.origin - e.prevOrigin).length() + e.rotAngle * c.bound;
         e.moved = e.motion > 0.25f * e.minDim;
     }
-    gcol::shapeAabb(m_shapes[size_t(e.first)], e.box);
-    for (int i = e.first + 1; i < e.last; ++i) {
-        gcol::Aabb b;
-        gcol::shapeAabb(m_shapes[size_t(i)], b);
-        grow(e.box, b);
+    if (!e.moved) {
+        if (!sameBits(e.box, c.tight)) e.box = c.tight;
+        return true;
     }
-    if (e.moved) {
+    e.box = c.tight;
+    {
         // Swept bounds: both end poses, inflated by how far rotation can carry a point off that path.
         m_scratchA.clear();
         g->worldShapes(e.prevOrigin, e.prevRotation, m_scratchA);
@@ -200,7 +337,7 @@ bool SimpleCollisionSpace::gatherEntry(CollisionGeometry* g, bool continuous, En
             gcol::shapeAabb(s, b);
             grow(e.box, b);
         }
-        float r = e.rotAngle * bound;
+        float r = e.rotAngle * c.bound;
         e.box.min -= Vector(r, r, r);
         e.box.max += Vector(r, r, r);
     }
@@ -226,9 +363,11 @@ void SimpleCollisionSpace::populateContactList(float delta) {
     const bool continuous = delta > 0.0f && std::isfinite(delta) && m_samplesPerSecond > 0;
     gatherEntries(continuous);
     // Candidate pairs (planes first: when the contact budget fills, the ground is the last thing to lose).
-    m_broadphase->findPairs(m_entries, m_pairs);
+    const Broadphase::PairList pairs = m_broadphase->findPairs(m_entries, m_relaid ? nullptr : &m_changed);
+    m_pairs = pairs.first;
+    m_pairCount = pairs.count;
     const float stepDelta = continuous ? delta : 0.0f;
-    for (const std::pair<int, int>& p : m_pairs)
+    for (const std::pair<int, int>& p : pairs)
         testPair(m_entries[size_t(p.first)], m_entries[size_t(p.second)], stepDelta);
     if (m_droppedPairs > 0 && !m_reportedDrops) {
         m_reportedDrops = true;
@@ -237,28 +376,67 @@ void SimpleCollisionSpace::populateContactList(float delta) {
             L"are dropped until bodies move apart (reported once)");
     }
     // Remember this call's poses for the next call's sampling.
-    for (const Entry& e : m_entries) {
+    for (Entry& e : m_entries) {
+        if (!e.active) continue;
         CollisionGeometry::SpaceState& st = e.g->spaceState();
         st.hasPrevious = true;
         st.previousBody = e.body;
         st.previousTeleports = e.teleports;
-        st.previousOrigin = e.origin;
-        st.previousRotation = e.rotation;
+        if (!e.cache.prevCurrent) { // (else they hold this pose already)
+            st.previousOrigin = e.origin;
+            st.previousRotation = e.rotation;
+        }
+        e.cache.prevIsPose = true;
     }
     carryRestingPairs(); // pairs not tested because both rest still touch
     m_populating = false;
     reportTouching();
 }
 
-void SimpleCollisionSpace::gatherEntries(bool continuous) {
+// One entry per member, in the members' order: a member that had an entry keeps it (its cache and shapes),
+// a new one starts empty. The shapes are packed anew (each entry's room is its shapes, at least one).
+void SimpleCollisionSpace::layOutEntries() {
+    m_oldEntries.swap(m_entries);
+    m_oldShapes.swap(m_shapes);
     m_entries.clear();
     m_shapes.clear();
+    m_shapeWaste = 0;
     for (CollisionGeometry* g : m_members) {
-        Entry e;
-        if (!gatherEntry(g, continuous, e)) continue;
-        e.g->spaceState().call = m_call;
-        e.g->spaceState().entry = int(m_entries.size());
-        m_entries.push_back(e);
+        CollisionGeometry::SpaceState& st = g->spaceState();
+        const int old = st.entry;
+        st.entry = int(m_entries.size());
+        if (old >= 0 && size_t(old) < m_oldEntries.size() && m_oldEntries[size_t(old)].g == g) {
+            m_entries.push_back(m_oldEntries[size_t(old)]);
+            Entry& e = m_entries.back();
+            const int first = int(m_shapes.size());
+            m_shapes.insert(m_shapes.end(), m_oldShapes.begin() + e.first, m_oldShapes.begin() + e.last);
+            e.last = first + (e.last - e.first);
+            e.first = first;
+            e.cache.capacity = std::max(1, e.last - e.first);
+        } else {
+            m_entries.emplace_back();
+            Entry& e = m_entries.back();
+            e.g = g;
+            e.plane = g->isPlane();
+            e.active = false;
+            e.first = e.last = int(m_shapes.size());
+            e.cache.capacity = 1;
+        }
+        m_shapes.resize(size_t(m_entries.back().first + m_entries.back().cache.capacity));
+    }
+    m_layoutDirty = false;
+}
+
+void SimpleCollisionSpace::gatherEntries(bool continuous) {
+    m_relaid = m_layoutDirty;
+    if (m_layoutDirty) layOutEntries();
+    m_changed.clear();
+    for (int i = 0; i < int(m_entries.size()); ++i) {
+        Entry& e = m_entries[size_t(i)];
+        const bool was = e.active;
+        const gcol::Aabb box = e.box;
+        e.active = gatherEntry(e, continuous);
+        if (e.active != was || (e.active && !e.plane && !sameBits(box, e.box))) m_changed.push_back(i);
     }
 }
 
@@ -266,8 +444,10 @@ size_t SimpleCollisionSpace::findCandidatePairs() {
     if (m_notifying || m_populating) return 0;
     ++m_call;
     gatherEntries(false);
-    m_broadphase->findPairs(m_entries, m_pairs);
-    return m_pairs.size();
+    const Broadphase::PairList pairs = m_broadphase->findPairs(m_entries, m_relaid ? nullptr : &m_changed);
+    m_pairs = pairs.first;
+    m_pairCount = pairs.count;
+    return m_pairCount;
 }
 
 bool SimpleCollisionSpace::setContactBudget(size_t maxContacts) {

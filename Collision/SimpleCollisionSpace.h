@@ -4,7 +4,10 @@
 //
 // populateContactList(delta):
 //  1. reads every geometry's pose from its body (a geometry without a body, except a plane, or with a
-//     non-finite pose is skipped; a non-finite pose is reported once with error());
+//     non-finite pose is skipped; a non-finite pose is reported once with error()); each geometry's entry
+//     is kept between calls, and one whose pose, shape version and body are as at the last call keeps its
+//     world shapes and box (only the resting state, filter and motion since the previous call are read
+//     again), so the broadphase hears of the boxes that changed;
 //  2. finds candidate pairs, the ones whose world AABBs (swept over the motion since the previous call when
 //     sampling is on) overlap, with its broadphase (sort-and-sweep or the tree); AABBs are conservative, so
 //     the pairs tested are a superset of the overlapping ones and the result equals plain all-pairs;
@@ -106,21 +109,41 @@ public:
     // candidate pairs; no exact test, contact or event): how many candidate pairs it found. For benchmarks.
     size_t findCandidatePairs();
 
-    // Per-geometry working state for one populate call.
-    struct Entry {
-        CollisionGeometry* g;
-        iRigidBody* body;
-        bool fixed, plane, moved; // fixed: resting (fixed in space or asleep) and not moved since last call
-        unsigned teleports;       // RBDynamics::teleports of the body and its root
-        Vector origin, prevOrigin;
-        Matrix rotation, prevRotation;
-        float motion;              // upper bound on how far any point of it moved since the previous call
-        float rotAngle;            // rotation since the previous call (radians)
-        float minDim;              // smallest dimension of its shapes
-        int first, last;           // its shapes in m_shapes
-        std::uint32_t layer, mask; // its collision filter (iCollisionFilter.h)
-        bool sensor;
-        gcol::Aabb box; // swept over the motion when moved
+    // Per-geometry working state, one per member in the members' order (m_entries[i] is m_members[i]'s, and
+    // SpaceState::entry names it), kept between calls: a geometry whose pose, shapes and body did not change
+    // since the last call keeps its shapes and box (SimpleCollisionSpace.cpp, gatherEntry).
+    // (Laid out for the call where little changed: what every call reads comes first, in three cache lines;
+    // the pose and the previous pose only when the body moved.)
+    struct alignas(64) Entry {
+        CollisionGeometry* g = nullptr;
+        iRigidBody* body = nullptr;
+        bool active = true; // gathered this call; an inactive one (no body, a pose not finite) is in no pair
+        bool fixed = false, plane = false, moved = false; // fixed: resting and not moved since last call
+        bool sensor = false;
+        unsigned teleports = 0;                            // RBDynamics::teleports of the body and its root
+        std::uint32_t layer = 1, mask = ~std::uint32_t(0); // its collision filter (iCollisionFilter.h)
+        float motion = 0.0f;   // upper bound on how far any point of it moved since the previous call
+        float rotAngle = 0.0f; // rotation since the previous call (radians)
+        float minDim = 0.0f;   // smallest dimension of its shapes
+        gcol::Aabb box;        // swept over the motion when moved
+        // What the shapes and boxes were made from (the space's; a broadphase ignores it).
+        struct Cache {
+            bool valid = false; // shapes, tight, minDim and bound hold for origin, rotation, version, body
+            bool raw = false;   // the body has no parent, and rawPosition.. are its pose inputs then
+            bool prevIsPose = false;  // SpaceState::previous* were last written from origin and rotation
+            bool prevCurrent = false; // this call: SpaceState::previous* hold origin and rotation already
+            bool prevIsSelf = false;  // prevOrigin and prevRotation are origin and rotation, bit for bit
+            bool selfAngleKnown = false;
+            bool sized = false; // minDim and bound hold for sizedVersion
+            unsigned shapeVersion = 0, sizedVersion = 0;
+            float bound = 0.0f, selfAngle = 0.0f; // bounding radius; rotationAngle(rotation, rotation)
+            Vector rawPosition, rawCom, rawRows[3];
+            gcol::Aabb tight; // its shapes' box at the pose
+            int capacity = 0; // shapes m_shapes holds for it from first on
+        } cache;
+        int first = 0, last = 0;   // its shapes in m_shapes
+        Vector origin, prevOrigin; // the previous pose: set (and read) only in a call with sampling on
+        Matrix rotation = Matrix(1), prevRotation = Matrix(1);
     };
     // One touching geometry pair, as listeners hear of it.
     struct Notice {
@@ -135,8 +158,10 @@ public:
 private:
     ~SimpleCollisionSpace();
     void removeNow(CollisionGeometry* g);
-    bool gatherEntry(CollisionGeometry* g, bool continuous, Entry& e);
-    void gatherEntries(bool continuous); // this call's entries, every member gathered
+    bool gatherEntry(Entry& e, bool continuous);
+    void placeShapes(Entry& e);          // m_newShapes becomes e's shapes in m_shapes
+    void layOutEntries();                // one entry per member again, cached ones carried over
+    void gatherEntries(bool continuous); // every member's entry brought up to date; m_changed, m_relaid
     void testPair(const Entry& a, const Entry& b, float delta);
     void testSensorPair(const Entry& a, const Entry& b);
     bool testAtPoses(const Entry& a, const Entry& b, float t, unsigned tag);
@@ -214,10 +239,19 @@ private:
     std::vector<unsigned> m_features;
     // Each contact's two geometries as this space's own records (so that no contact is cross-cast back).
     std::vector<std::pair<CollisionGeometry*, CollisionGeometry*>> m_contactGeoms;
+    // Kept between calls: the entries, their shapes (each entry's from first, room for cache.capacity), which
+    // entries' boxes or activity changed this call, and whether they were laid out anew (all changed).
+    std::vector<Entry> m_entries, m_oldEntries;
+    std::vector<gcol::WorldShape> m_shapes, m_oldShapes;
+    std::vector<int> m_changed;
+    bool m_relaid = true;
+    bool m_layoutDirty = true; // members were added or removed, or m_shapes is mostly waste
+    size_t m_shapeWaste = 0;   // shapes in m_shapes no entry owns
     // Scratch reused between calls.
-    std::vector<Entry> m_entries;
-    std::vector<gcol::WorldShape> m_shapes, m_scratchA, m_scratchB;
-    std::vector<std::pair<int, int>> m_pairs; // this call's candidate pairs (entry indices), in test order
+    std::vector<gcol::WorldShape> m_newShapes, m_scratchA, m_scratchB;
+    const std::pair<int, int>* m_pairs =
+        nullptr; // this call's candidate pairs, in test order (the broadphase's)
+    size_t m_pairCount = 0;
     std::vector<CollisionGeometry*> m_candidates; // a query's
     std::vector<Notice> m_notices;  // this call's touching pairs, then the resting ones carried over
     std::vector<Notice> m_touching; // the pairs touching at the last call

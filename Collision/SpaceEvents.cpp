@@ -40,8 +40,11 @@ void dropRepeats(std::vector<SimpleCollisionSpace::Notice>& notices) {
 
 void SimpleCollisionSpace::carryRestingPairs() {
     auto entryOf = [this](CollisionGeometry* g) -> const Entry* {
-        const CollisionGeometry::SpaceState& st = g->spaceState();
-        return st.call == m_call ? &m_entries[size_t(st.entry)] : nullptr;
+        const int i = g->spaceState().entry; // its entry, if it took part in this call
+        return i >= 0 && size_t(i) < m_entries.size() && m_entries[size_t(i)].g == g &&
+                       m_entries[size_t(i)].active
+                   ? &m_entries[size_t(i)]
+                   : nullptr;
     };
     for (const Notice& n : m_touching) {
         const Entry* a = entryOf(n.g1);

@@ -1,8 +1,9 @@
 // SpaceSnapshot.cpp - a space's state saved and put back (iSnapshots.h): what the next populateContactList
 // reads from the calls before it. Each geometry's previous pose (the start of its swept motion), the pairs
 // touching at the last call (the continuous stage treats them as touching at the start; listeners hear them
-// carried over), and the events held for delivery. The broadphase keeps nothing the pairs depend on: sort
-// and sweep starts afresh each call, and the tree's pairs are sorted.
+// carried over), and the events held for delivery. The broadphase keeps nothing the pairs depend on but the
+// boxes (its pairs follow the entries' boxes, whatever calls made them), and the entries' cache holds only
+// what a pose gives (shapes, boxes): its note that the previous pose is the current one is dropped here.
 #include "CollisionGeometry.h"
 #include "SimpleCollisionSpace.h"
 
@@ -66,10 +67,12 @@ bool SimpleCollisionSpace::restoreSnapshot(const iSnapshot* snapshot) {
     }
     for (const SpaceSnapshot::Member& m : s->members) {
         CollisionGeometry::SpaceState& st = m.geometry->spaceState();
-        const int proxy = st.proxy; // the broadphase's, as it is now
+        const int proxy = st.proxy, entry = st.entry; // the broadphase's and the entries', as they are now
         st = m.state;
         st.proxy = proxy;
+        st.entry = entry;
     }
+    for (Entry& e : m_entries) e.cache.prevIsPose = false; // the previous poses are the snapshot's now
     m_touching = s->touching;
     m_held = s->held;
     m_heldCalls = s->heldCalls;

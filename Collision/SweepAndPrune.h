@@ -1,14 +1,19 @@
-// SweepAndPrune.h - the simple space's broadphase: every call sorts the entries' boxes along x and sweeps
-// (nothing is kept between calls); planes meet every bounded entry, and come first, so that when the
-// contact budget fills the ground is the last thing lost. Queries consider every geometry.
+// SweepAndPrune.h - the simple space's broadphase: the entries' boxes sorted along x and swept; planes meet
+// every bounded entry, and come first, so that when the contact budget fills the ground is the last thing
+// lost. Queries consider every geometry.
+//
+// The order is kept between calls: when only some boxes changed, an insertion sort on the previous order
+// brings it up to date (O(n + how far they moved in it)), and the sweep runs over a packed copy of the
+// sorted boxes; when nothing changed, the previous pairs stand as they are. The pairs, and their order (by
+// the low x of the first box, ties by entry index, then along the sweep), are those of sorting afresh.
 #pragma once
 
 #include "Broadphase.h"
 
 class SweepAndPrune final : public Broadphase {
 public:
-    void findPairs(const std::vector<SimpleCollisionSpace::Entry>& entries,
-                   std::vector<EntryPair>& out) override;
+    PairList findPairs(const std::vector<SimpleCollisionSpace::Entry>& entries,
+                       const std::vector<int>* changed) override;
     void overlapCandidates(const std::vector<CollisionGeometry*>& all, const gcol::Aabb& box,
                            std::vector<CollisionGeometry*>& out) override;
     void rayCandidates(const std::vector<CollisionGeometry*>& all, const Vector& origin, const Vector& dir,
@@ -16,5 +21,9 @@ public:
     void forget(CollisionGeometry*) override {}
 
 private:
-    std::vector<int> m_order, m_planes;
+    void sortAfresh(const std::vector<SimpleCollisionSpace::Entry>& entries);
+    std::vector<int> m_order, m_planes; // active bounded entries by (box.min.x, index); active planes
+    std::vector<gcol::Aabb> m_sorted;   // m_order's boxes, in that order
+    std::vector<int> m_place;           // each entry's place in m_order (-1: none, -2: a plane)
+    std::vector<EntryPair> m_out;
 };

@@ -33,6 +33,7 @@ int TreeBroadphase::proxyOf(CollisionGeometry* g) {
     if (m_freeProxies.empty()) {
         p = int(m_proxies.size());
         m_proxies.emplace_back();
+        m_exact.emplace_back();
     } else {
         p = m_freeProxies.back();
         m_freeProxies.pop_back();
@@ -150,40 +151,86 @@ void TreeBroadphase::forget(CollisionGeometry* g) {
     if (g->spaceState().proxy >= 0) kill(g->spaceState().proxy);
 }
 
-void TreeBroadphase::findPairs(const std::vector<SimpleCollisionSpace::Entry>& entries,
-                               std::vector<EntryPair>& out) {
-    out.clear();
-    ++m_stamp;
+void TreeBroadphase::track(const SimpleCollisionSpace::Entry& e, int i) {
+    const int p = proxyOf(e.g);
+    Proxy& x = m_proxies[size_t(p)];
+    x.entry = i;
+    x.stamp = m_stamp;
+    if ((x.leaf == gcol::DynamicTree::kNull && !x.stale) || !gcol::contains(x.fat, e.box)) refit(p, e.box);
+    x.origin = e.origin;
+    x.rotation = e.rotation;
+    x.shapeVersion = e.g->shapeVersion();
+    Exact& ex = m_exact[size_t(p)];
+    ex.box = e.box;
+    ex.entry = i;
+    ex.changed = m_stamp;
+}
+
+void TreeBroadphase::listEntries(const std::vector<SimpleCollisionSpace::Entry>& entries) {
     m_planes.clear();
     m_bounded.clear();
-    for (int i = 0; i < int(entries.size()); ++i) {
-        const SimpleCollisionSpace::Entry& e = entries[size_t(i)];
-        if (e.plane) {
-            m_planes.push_back(i);
-            continue;
+    for (int i = 0; i < int(entries.size()); ++i)
+        if (entries[size_t(i)].active) (entries[size_t(i)].plane ? m_planes : m_bounded).push_back(i);
+}
+
+Broadphase::PairList TreeBroadphase::findPairs(const std::vector<SimpleCollisionSpace::Entry>& entries,
+                                               const std::vector<int>* changed) {
+    ++m_stamp;
+    // Every entry is looked at when they may be new ones, or when queries moved proxies since the last call
+    // (a proxy they made or refitted may belong to no entry, or its fat box may have left its entry's box).
+    const bool all = !changed || !m_moveBuffer.empty() || !m_outValid;
+    bool lists = all, boxes = all;
+    if (all) {
+        listEntries(entries);
+        for (int i : m_bounded) track(entries[size_t(i)], i);
+        // Geometry not gathered this call (no body now, a pose that is not finite, an empty compound) leaves.
+        for (size_t p = 0; p < m_proxies.size(); ++p)
+            if (m_proxies[p].used && !m_proxies[p].dead && m_proxies[p].stamp != m_stamp) kill(int(p));
+    } else {
+        for (int i : *changed) {
+            const SimpleCollisionSpace::Entry& e = entries[size_t(i)];
+            if (e.plane) { // a plane joined or left
+                lists = true;
+                continue;
+            }
+            const int p = e.g->spaceState().proxy;
+            if (!e.active) { // it leaves
+                if (p >= 0) kill(p);
+                lists = true;
+                continue;
+            }
+            lists = lists || p < 0; // it joins
+            track(e, i);
+            boxes = true;
         }
-        m_bounded.push_back(i);
-        const int p = proxyOf(e.g);
-        Proxy& x = m_proxies[size_t(p)];
-        x.entry = i;
-        x.stamp = m_stamp;
-        if ((x.leaf == gcol::DynamicTree::kNull && !x.stale) || !gcol::contains(x.fat, e.box))
-            refit(p, e.box);
-        x.origin = e.origin;
-        x.rotation = e.rotation;
-        x.shapeVersion = e.g->shapeVersion();
+        if (lists) listEntries(entries);
     }
-    // Geometry not gathered this call (no body now, a pose that is not finite, an empty compound) leaves.
-    for (size_t p = 0; p < m_proxies.size(); ++p)
-        if (m_proxies[p].used && !m_proxies[p].dead && m_proxies[p].stamp != m_stamp) kill(int(p));
+    const bool pairs = !m_moveBuffer.empty() || !m_dead.empty();
     updatePairs();
+    if (!lists && !boxes && !pairs) return {m_out.data(), m_outCount}; // nothing changed: the same pairs
+    const size_t most = m_planes.size() * m_bounded.size() + m_pairs.size();
+    if (m_out.size() < most) m_out.resize(most);
+    EntryPair* out = m_out.data();
+    size_t n = 0;
     for (int p : m_planes)
-        for (int i : m_bounded) out.emplace_back(std::min(p, i), std::max(p, i));
-    for (const Pair& pr : m_pairs) {
-        const int a = m_proxies[size_t(pr.a)].entry, b = m_proxies[size_t(pr.b)].entry;
-        if (gcol::overlaps(entries[size_t(a)].box, entries[size_t(b)].box))
-            out.emplace_back(std::min(a, b), std::max(a, b));
+        for (int i : m_bounded) out[n++] = EntryPair(std::min(p, i), std::max(p, i));
+    // Every kept pair is written and kept when it touches, without a branch that goes either way: a pair
+    // whose boxes did not change keeps the answer it had.
+    const unsigned stamp = m_stamp;
+    for (Pair& pr : m_pairs) {
+        const Exact& a = m_exact[size_t(pr.a)];
+        const Exact& b = m_exact[size_t(pr.b)];
+        const bool overlap = (a.box.min.x <= b.box.max.x) & (a.box.max.x >= b.box.min.x) &
+                             (a.box.min.y <= b.box.max.y) & (a.box.max.y >= b.box.min.y) &
+                             (a.box.min.z <= b.box.max.z) & (a.box.max.z >= b.box.min.z); // gcol::overlaps
+        const bool retest = (pr.touching < 0) | (a.changed == stamp) | (b.changed == stamp);
+        pr.touching = retest ? int(overlap) : pr.touching;
+        out[n] = EntryPair(std::min(a.entry, b.entry), std::max(a.entry, b.entry));
+        n += size_t(pr.touching);
     }
+    m_outCount = n;
+    m_outValid = true;
+    return {m_out.data(), m_outCount};
 }
 
 void TreeBroadphase::updatePairs() {

@@ -14,6 +14,11 @@
 // no merge: it lists the pairs whose exact boxes overlap, O(pairs). Pairs are listed planes first, then by
 // join order. Queries first bring the proxies up to date with the bodies' current poses (a pose compare per
 // geometry; shapes rebuilt only for one that moved), then ask the tree.
+//
+// A call's work follows what changed: the space names the entries whose boxes changed, and only their
+// proxies are looked at (every entry's only when the space laid its entries out anew, or queries moved
+// proxies since). Each kept pair remembers whether its exact boxes overlapped; the test is made again only
+// for a pair one of whose boxes changed. When no box changed, the previous list stands as it is.
 #pragma once
 
 #include "Broadphase.h"
@@ -26,8 +31,8 @@ public:
     static constexpr float kMargin = 0.1f;   // m (times the length unit), fat box margin on every side
     static constexpr size_t kBulkMoves = 64; // this many moved, and a quarter of all: one rebuild
 
-    void findPairs(const std::vector<SimpleCollisionSpace::Entry>& entries,
-                   std::vector<EntryPair>& out) override;
+    PairList findPairs(const std::vector<SimpleCollisionSpace::Entry>& entries,
+                       const std::vector<int>* changed) override;
     void overlapCandidates(const std::vector<CollisionGeometry*>& all, const gcol::Aabb& box,
                            std::vector<CollisionGeometry*>& out) override;
     void rayCandidates(const std::vector<CollisionGeometry*>& all, const Vector& origin, const Vector& dir,
@@ -60,13 +65,24 @@ private:
         // The join orders, lower in the high half: sorted by key, pairs follow the space's order. (Join
         // orders are counted modulo 2^32 here: the order only goes wrong after 4 billion geometries joined.)
         uint64_t key;
-        int a, b; // their proxies, a the earlier joined
+        int a, b;     // their proxies, a the earlier joined
+        int touching; // their exact boxes overlapped when last tested (-1: not tested yet)
         bool operator<(const Pair& o) const { return key < o.key; }
     };
     static Pair pairOf(const Proxy& x, int p, const Proxy& y, int q) {
         const uint64_t ox = uint32_t(x.order), oy = uint32_t(y.order);
-        return ox < oy ? Pair{ox << 32 | oy, p, q} : Pair{oy << 32 | ox, q, p};
+        return ox < oy ? Pair{ox << 32 | oy, p, q, -1} : Pair{oy << 32 | ox, q, p, -1};
     }
+    // What the pair list reads of each proxy, packed: its entry's exact box and index, and the call that
+    // last changed that box.
+    struct Exact {
+        gcol::Aabb box;
+        int entry = -1;
+        unsigned changed = 0;
+    };
+    // Entry i (active, bounded) of this call: its proxy made or found, its fat box checked, its box noted.
+    void track(const SimpleCollisionSpace::Entry& e, int i);
+    void listEntries(const std::vector<SimpleCollisionSpace::Entry>& entries); // m_planes, m_bounded
     int proxyOf(CollisionGeometry* g);
     // Gives proxy p the box tight (not inside its fat box): a new fat box, into the move buffer.
     void refit(int p, const gcol::Aabb& tight);
@@ -80,6 +96,10 @@ private:
 
     gcol::DynamicTree m_tree;
     std::vector<Proxy> m_proxies;
+    std::vector<Exact> m_exact;   // per proxy
+    std::vector<EntryPair> m_out; // its first m_outCount are this call's pairs (it never shrinks)
+    size_t m_outCount = 0;
+    bool m_outValid = false;
     std::vector<int> m_freeProxies, m_dead;
     std::vector<int> m_moveBuffer;
     std::vector<std::pair<unsigned, int>> m_keys; // Morton key, proxy
