@@ -83,6 +83,23 @@ inline void applyRow(const BlockRow& r, const Lanes& ima, const Lanes& imb, cons
     u.wb = u.wb + impulse * r.turnB;
 }
 
+// A block's two bodies' velocities in each lane, from the flat array (V: ContactBlocks::Velocity), and back
+// to where they are stored.
+template <class V> BlockVelocity gatherBlock(const ContactBlock& block, const V* u) {
+    const int *a = block.read[0], *b = block.read[1];
+    return {gatherRows(u[a[0]].v, u[a[1]].v, u[a[2]].v, u[a[3]].v),
+            gatherRows(u[a[0]].w, u[a[1]].w, u[a[2]].w, u[a[3]].w),
+            gatherRows(u[b[0]].v, u[b[1]].v, u[b[2]].v, u[b[3]].v),
+            gatherRows(u[b[0]].w, u[b[1]].w, u[b[2]].w, u[b[3]].w)};
+}
+template <class V> void scatterBlock(const ContactBlock& block, const BlockVelocity& vel, V* u) {
+    const int *a = block.write[0], *b = block.write[1];
+    scatterRows(vel.va, u[a[0]].v, u[a[1]].v, u[a[2]].v, u[a[3]].v);
+    scatterRows(vel.wa, u[a[0]].w, u[a[1]].w, u[a[2]].w, u[a[3]].w);
+    scatterRows(vel.vb, u[b[0]].v, u[b[1]].v, u[b[2]].v, u[b[3]].v);
+    scatterRows(vel.wb, u[b[0]].w, u[b[1]].w, u[b[2]].w, u[b[3]].w);
+}
+
 } // namespace
 
 // --- packing ---
@@ -370,15 +387,11 @@ void ContactBlocks::warmStart(std::vector<SolverBody>& bodies, bool firstSubstep
     const Lanes impact(impactSpeed), zero(0);
     for (ContactBlock& block : m_blocks) {
         Velocity* u = m_velocity.data();
-        const int *ra = block.read[0], *rb = block.read[1];
-        BlockVelocity vel{gatherRows(u[ra[0]].v, u[ra[1]].v, u[ra[2]].v, u[ra[3]].v),
-                          gatherRows(u[ra[0]].w, u[ra[1]].w, u[ra[2]].w, u[ra[3]].w),
-                          gatherRows(u[rb[0]].v, u[rb[1]].v, u[rb[2]].v, u[rb[3]].v),
-                          gatherRows(u[rb[0]].w, u[rb[1]].w, u[rb[2]].w, u[rb[3]].w)};
+        BlockVelocity vel = gatherBlock(block, u);
         for (int i = 0; i < block.points; ++i) {
             BlockPoint& q = block.p[i];
-            if (!firstSubstep) { // an impact does not recur: its point starts the later sub-steps from
-                                 // nothing
+            // An impact does not recur: its point starts the later sub-steps from nothing.
+            if (!firstSubstep) {
                 const LaneMask fast = less(q.approach, impact);
                 for (int r = 0; r < 3; ++r) q.impulse[r] = select(fast, zero, q.impulse[r]);
             }
@@ -387,11 +400,7 @@ void ContactBlocks::warmStart(std::vector<SolverBody>& bodies, bool firstSubstep
             applyRow(q.row[1], block.invMassA, block.invMassB, q.impulse[1], vel);
             applyRow(q.row[2], block.invMassA, block.invMassB, q.impulse[2], vel);
         }
-        const int *wa = block.write[0], *wb = block.write[1];
-        scatterRows(vel.va, u[wa[0]].v, u[wa[1]].v, u[wa[2]].v, u[wa[3]].v);
-        scatterRows(vel.wa, u[wa[0]].w, u[wa[1]].w, u[wa[2]].w, u[wa[3]].w);
-        scatterRows(vel.vb, u[wb[0]].v, u[wb[1]].v, u[wb[2]].v, u[wb[3]].v);
-        scatterRows(vel.wb, u[wb[0]].w, u[wb[1]].w, u[wb[2]].w, u[wb[3]].w);
+        scatterBlock(block, vel, u);
     }
     storeVelocities(bodies);
 }
@@ -422,11 +431,7 @@ void ContactBlocks::solve(std::vector<SolverBody>& bodies, const Sweep& sweep) {
             }
         }
         Velocity* u = m_velocity.data();
-        const int *ra = block.read[0], *rb = block.read[1];
-        BlockVelocity vel{gatherRows(u[ra[0]].v, u[ra[1]].v, u[ra[2]].v, u[ra[3]].v),
-                          gatherRows(u[ra[0]].w, u[ra[1]].w, u[ra[2]].w, u[ra[3]].w),
-                          gatherRows(u[rb[0]].v, u[rb[1]].v, u[rb[2]].v, u[rb[3]].v),
-                          gatherRows(u[rb[0]].w, u[rb[1]].w, u[rb[2]].w, u[rb[3]].w)};
+        BlockVelocity vel = gatherBlock(block, u);
         auto solveNormal = [&]() {
             for (int i = 0; i < block.points; ++i) {
                 BlockPoint& q = block.p[i];
@@ -453,11 +458,7 @@ void ContactBlocks::solve(std::vector<SolverBody>& bodies, const Sweep& sweep) {
                 }
             }
         solveNormal();
-        const int *wa = block.write[0], *wb = block.write[1];
-        scatterRows(vel.va, u[wa[0]].v, u[wa[1]].v, u[wa[2]].v, u[wa[3]].v);
-        scatterRows(vel.wa, u[wa[0]].w, u[wa[1]].w, u[wa[2]].w, u[wa[3]].w);
-        scatterRows(vel.vb, u[wb[0]].v, u[wb[1]].v, u[wb[2]].v, u[wb[3]].v);
-        scatterRows(vel.wb, u[wb[0]].w, u[wb[1]].w, u[wb[2]].w, u[wb[3]].w);
+        scatterBlock(block, vel, u);
     }
     storeVelocities(bodies);
 }
