@@ -15,6 +15,7 @@ set(GUARDIAN_PHYSICS_SOURCES
   Composite.cpp
   FrameDriver.cpp
   ContactBlocks.cpp
+  ContactBlocksPrepare.cpp
   ContactManifolds.cpp
   ContactResolution.cpp
   ContactRestitution.cpp

@@ -1,0 +1,130 @@
+// ContactBlocksPrepare.cpp - each point's rows at the step's start, four lanes at a time
+// (ContactBlocks::prepare), and each manifold's soft contact in its lane.
+#include "ContactBlocks.h"
+#include "SolverRows.h"
+
+namespace physics {
+
+namespace {
+
+// The rows of 3x3 matrices of four lanes' bodies (a column vector's product, Eigen's order: m0 v0 + (m1 v1 +
+// m2 v2) per row).
+struct Lanes33 {
+    Lanes3 row[3];
+};
+Lanes33 gatherMatrices(const Mat3* m[kLanes]) {
+    Lanes33 out;
+    for (int l = 0; l < kLanes; ++l)
+        for (int i = 0; i < 3; ++i) {
+            out.row[i].x.setLane(l, (*m[l])(i, 0));
+            out.row[i].y.setLane(l, (*m[l])(i, 1));
+            out.row[i].z.setLane(l, (*m[l])(i, 2));
+        }
+    return out;
+}
+Lanes3 timesLanes(const Lanes33& m, const Lanes3& v) {
+    return {dot(m.row[0], v), dot(m.row[1], v), dot(m.row[2], v)};
+}
+Lanes3 gatherVectors(const Vec3* v[kLanes]) {
+    Lanes3 out;
+    for (int l = 0; l < kLanes; ++l) setLanes3(out, l, *v[l]);
+    return out;
+}
+Lanes3 selectLanes3(LaneMask where, const Lanes3& yes, const Lanes3& no) {
+    return {select(where, yes.x, no.x), select(where, yes.y, no.y), select(where, yes.z, no.z)};
+}
+void storeLaneTo(const Lanes3& l, int lane, Vec3& out) {
+    out = Vec3(l.x.lane(lane), l.y.lane(lane), l.z.lane(lane));
+}
+
+} // namespace
+
+// ContactSolver::prepare's rows, four lanes at a time, the same arithmetic in the same order: r from each
+// centre of mass, r x d, I^-1 (r x d), the effective mass 1 / (1/m_a + 1/m_b + (r_a x d) I_a^-1 (r_a x d) +
+// ...), and the approach speed along the normal.
+void ContactBlocks::prepare(std::vector<Manifold>& manifolds, const std::vector<SolverBody>& bodies) {
+    static const Mat3 zeroMatrix = Mat3::Zero();
+    static const Vec3 zeroVector = Vec3::Zero();
+    const Lanes zero(0), one(1);
+    for (ContactBlock& block : m_blocks) {
+        const Mat3 *ia[kLanes], *ib[kLanes];
+        const Vec3 *ca[kLanes], *cb[kLanes], *va[kLanes], *wa[kLanes], *vb[kLanes], *wb[kLanes];
+        for (int l = 0; l < kLanes; ++l) {
+            const int k = block.manifold[l];
+            const SolverBody* a = k >= 0 ? &bodies[size_t(manifolds[size_t(k)].a)] : nullptr;
+            const SolverBody* b = k >= 0 ? &bodies[size_t(manifolds[size_t(k)].b)] : nullptr;
+            ia[l] = a ? &a->invInertia : &zeroMatrix;
+            ib[l] = b ? &b->invInertia : &zeroMatrix;
+            ca[l] = a ? &a->com : &zeroVector;
+            cb[l] = b ? &b->com : &zeroVector;
+            va[l] = a ? &a->v : &zeroVector;
+            wa[l] = a ? &a->w : &zeroVector;
+            vb[l] = b ? &b->v : &zeroVector;
+            wb[l] = b ? &b->w : &zeroVector;
+        }
+        const Lanes33 invA = gatherMatrices(ia), invB = gatherMatrices(ib);
+        const Lanes3 comA = gatherVectors(ca), comB = gatherVectors(cb);
+        const Lanes3 velA = gatherVectors(va), spinA = gatherVectors(wa), velB = gatherVectors(vb),
+                     spinB = gatherVectors(wb);
+        const LaneMask friction = less(zero, block.frictionCoefficient);
+        const Lanes baseK = block.invMassA + block.invMassB;
+        for (int i = 0; i < block.points; ++i) {
+            const Vec3 *point[kLanes], *dirs[3][kLanes];
+            Lanes presence; // 1 in the lanes whose manifold has this point
+            for (int l = 0; l < kLanes; ++l) {
+                const int k = block.manifold[l];
+                const bool here = k >= 0 && i < manifolds[size_t(k)].count;
+                const ContactPoint* p = here ? &manifolds[size_t(k)].points[i] : nullptr;
+                point[l] = p ? &p->point : &zeroVector;
+                dirs[0][l] = p ? &p->normal : &zeroVector;
+                dirs[1][l] = p ? &p->tangent[0] : &zeroVector;
+                dirs[2][l] = p ? &p->tangent[1] : &zeroVector;
+                if (here) presence.setLane(l, 1);
+            }
+            const LaneMask present = less(zero, presence);
+            const Lanes3 at = gatherVectors(point);
+            const Lanes3 rA = at - comA, rB = at - comB;
+            BlockPoint& q = block.p[i];
+            for (int r = 0; r < 3; ++r) {
+                if (r > 0 && !block.friction) break;
+                const Lanes3 d = gatherVectors(dirs[r]);
+                const Lanes3 armA = crossLanes(rA, d), armB = crossLanes(rB, d);
+                const Lanes3 turnA = timesLanes(invA, armA), turnB = timesLanes(invB, armB);
+                const Lanes k = (baseK + dot(armA, turnA)) + dot(armB, turnB);
+                const LaneMask keep = r == 0 ? present : andMask(present, friction);
+                const Lanes mass = select(andMask(keep, less(zero, k)), one / k, zero);
+                BlockRow& row = q.row[r];
+                row.dir = selectLanes3(keep, d, Lanes3{});
+                row.armA = selectLanes3(keep, armA, Lanes3{});
+                row.armB = selectLanes3(keep, armB, Lanes3{});
+                row.turnA = selectLanes3(keep, turnA, Lanes3{});
+                row.turnB = selectLanes3(keep, turnB, Lanes3{});
+                row.mass = mass;
+            }
+            const BlockRow& n = q.row[0];
+            q.approach = (dot(n.dir, velB - velA) + dot(n.armB, spinB)) - dot(n.armA, spinA);
+            for (int l = 0; l < kLanes; ++l) { // the normal row kept with the point
+                const int k = block.manifold[l];
+                if (k < 0 || i >= manifolds[size_t(k)].count) continue;
+                ContactPoint& p = manifolds[size_t(k)].points[i];
+                storeLaneTo(rA, l, p.rA);
+                storeLaneTo(rB, l, p.rB);
+                storeLaneTo(n.armA, l, p.armA);
+                storeLaneTo(n.armB, l, p.armB);
+                storeLaneTo(n.turnA, l, p.turnA);
+                storeLaneTo(n.turnB, l, p.turnB);
+                p.normalMass = n.mass.lane(l);
+                p.approachSpeed = q.approach.lane(l);
+            }
+        }
+    }
+}
+
+void ContactBlocks::setSoftness(const Manifold& m) {
+    ContactBlock& block = at(m);
+    block.biasRate.setLane(m.lane, m.biasRate);
+    block.massScale.setLane(m.lane, m.massScale);
+    block.impulseScale.setLane(m.lane, m.impulseScale);
+}
+
+} // namespace physics
