@@ -107,8 +107,6 @@ void ContactBlocks::prepare(std::vector<Manifold>& manifolds, const std::vector<
                 const int k = block.manifold[l];
                 if (k < 0 || i >= manifolds[size_t(k)].count) continue;
                 ContactPoint& p = manifolds[size_t(k)].points[i];
-                storeLaneTo(rA, l, p.rA);
-                storeLaneTo(rB, l, p.rB);
                 storeLaneTo(n.armA, l, p.armA);
                 storeLaneTo(n.armB, l, p.armB);
                 storeLaneTo(n.turnA, l, p.turnA);

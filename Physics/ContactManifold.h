@@ -13,12 +13,6 @@ struct RBDynamics;
 
 namespace physics {
 
-// Four Reals, the last 0: a row's vectors in the solver's inner loop, one SSE register each in float (Eigen
-// vectorises fixed 4-float vectors; a Vec3's components are shuffled in and out one at a time).
-using Vec4 = Eigen::Matrix<Real, 4, 1>;
-inline Vec4 wide(const Vec3& v) { return Vec4(v.x(), v.y(), v.z(), 0.0f); }
-inline Vec3 narrow(const Vec4& v) { return v.head<3>(); }
-
 // A body as the solver sees it: velocities about its (composite) centre of mass and its inverse mass
 // properties in world axes. Immovable bodies (fixed, infinite mass) have zero inverses but keep their
 // velocity, so a moving kinematic body pushes what it touches.
@@ -51,8 +45,7 @@ struct ContactPoint {
     Vec3 tangent[2] = {Vec3::UnitX(), Vec3::UnitZ()};    // a fixed basis derived from the normal
     Vec3 anchorA = Vec3::Zero(), anchorB = Vec3::Zero(); // the touching surface points, in each root's frame
     Vec3 point = Vec3::Zero(); // the contact point (world) at the step's start, midway between the two
-    Vec3 rA = Vec3::Zero(), rB = Vec3::Zero(); // from each centre of mass to the contact (world), once known
-    float depth = 0; // overlap as the detector reported it (the four deepest are kept)
+    float depth = 0;           // overlap as the detector reported it (the four deepest are kept)
     // The normal row (the solver's rows, tangents too, are in ContactBlocks.h; restitution and shock
     // propagation use this one): r x n on each body, I^-1 (r x n), how an impulse along n turns each body,
     // and the effective mass along n.
