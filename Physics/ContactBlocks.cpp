@@ -237,7 +237,7 @@ void ContactBlocks::solve(std::vector<SolverBody>& bodies, const Sweep& sweep) {
         // Positions do not change within a sweep, nor between the velocity sweep and the push out that
         // follows it: the gaps are measured once for both.
         if (!sweep.pushOut) measureGaps(block);
-        // Each point's target: reach v_n = -bias, softly (ContactSolver::solveManifold).
+        // Each point's target: reach v_n = -bias, softly (see ContactSolver::solveContacts).
         Lanes bias[4], massScale[4], impulseScale[4];
         for (int i = 0; i < block.points; ++i) {
             const BlockPoint& q = block.p[i];
@@ -247,10 +247,10 @@ void ContactBlocks::solve(std::vector<SolverBody>& bodies, const Sweep& sweep) {
             massScale[i] = one;
             impulseScale[i] = zero;
             if (sweep.pushOut) {
-                const LaneMask soft = andNotMask(orMask(apart, rigid), less(zero, one));
-                bias[i] = select(soft, maxOf(block.biasRate * q.gap, maxPush), bias[i]);
-                massScale[i] = select(soft, block.massScale, one);
-                impulseScale[i] = select(soft, block.impulseScale, zero);
+                const LaneMask notSoft = orMask(apart, rigid);
+                bias[i] = select(notSoft, bias[i], maxOf(block.biasRate * q.gap, maxPush));
+                massScale[i] = select(notSoft, one, block.massScale);
+                impulseScale[i] = select(notSoft, zero, block.impulseScale);
             }
         }
         Velocity* u = m_velocity.data();

@@ -56,8 +56,8 @@ public:
 
     // Packs this step's manifolds (their bodies, anchors and impulses), noting each one's block and lane.
     void pack(std::vector<Manifold>& manifolds, const std::vector<SolverBody>& bodies);
-    // A manifold's soft contact (Manifold::biasRate, massScale, impulseScale), set after pack().
-    void setSoftness(const Manifold& m);
+    // A manifold's soft contact for this step's sub-step (ContactSolver::contactSoftness), set after pack().
+    void setSoftness(const Manifold& m, Real biasRate, Real massScale, Real impulseScale);
     // Every point's rows at the step's start (ContactSolver::prepare, four lanes at a time): the normal and,
     // with friction, the two tangents; each point keeps its normal row and approach speed too (restitution,
     // shock propagation).

@@ -118,11 +118,11 @@ void ContactBlocks::prepare(std::vector<Manifold>& manifolds, const std::vector<
     }
 }
 
-void ContactBlocks::setSoftness(const Manifold& m) {
+void ContactBlocks::setSoftness(const Manifold& m, Real biasRate, Real massScale, Real impulseScale) {
     ContactBlock& block = at(m);
-    block.biasRate.setLane(m.lane, m.biasRate);
-    block.massScale.setLane(m.lane, m.massScale);
-    block.impulseScale.setLane(m.lane, m.impulseScale);
+    block.biasRate.setLane(m.lane, biasRate);
+    block.massScale.setLane(m.lane, massScale);
+    block.impulseScale.setLane(m.lane, impulseScale);
 }
 
 } // namespace physics

@@ -72,8 +72,6 @@ struct Manifold {
     // The smaller shape's bounding radius (infinite for two planes' worth): what a resting overlap is
     // measured against (SolverSettings::restingOverlap). Known when the pair is reported, kept with it.
     Real size = 0;
-    // The soft contact of this pair for the step's sub-step (ContactSolver::contactSoftness).
-    Real biasRate = 0, massScale = 1, impulseScale = 0;
     bool bounces = false; // a point bounces this step: its overlap is projected out entirely
     Real projectable = 0; // how much further its overlap may still be projected out this step
     int count = 0;

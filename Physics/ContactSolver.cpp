@@ -189,10 +189,7 @@ ContactSolver::Softness ContactSolver::contactSoftness(const Manifold& m, Real h
 void ContactSolver::prepare(Real dt, Real h) {
     for (Manifold& m : m_manifolds) {
         const Softness soft = contactSoftness(m, h);
-        m.biasRate = soft.biasRate;
-        m.massScale = soft.massScale;
-        m.impulseScale = soft.impulseScale;
-        m_blocks.setSoftness(m);
+        m_blocks.setSoftness(m, soft.biasRate, soft.massScale, soft.impulseScale);
     }
     m_blocks.prepare(m_manifolds, m_bodies);
     for (Manifold& m : m_manifolds) {

@@ -40,12 +40,10 @@ inline Lanes operator-(Lanes a, Lanes b) { return Lanes(_mm_sub_ps(a.v(), b.v())
 inline Lanes operator*(Lanes a, Lanes b) { return Lanes(_mm_mul_ps(a.v(), b.v())); }
 inline Lanes operator/(Lanes a, Lanes b) { return Lanes(_mm_div_ps(a.v(), b.v())); }
 inline Lanes operator-(Lanes a) { return Lanes(_mm_xor_ps(a.v(), _mm_set1_ps(-0.0f))); }
-// std::max(a, b) and std::min(a, b) lane by lane, the same operand returned on ties.
+// std::max(a, b) lane by lane, the same operand returned on ties.
 inline Lanes maxOf(Lanes a, Lanes b) { return Lanes(_mm_max_ps(b.v(), a.v())); }
-inline Lanes minOf(Lanes a, Lanes b) { return Lanes(_mm_min_ps(b.v(), a.v())); }
 inline LaneMask less(Lanes a, Lanes b) { return Lanes(_mm_cmplt_ps(a.v(), b.v())); }
 inline LaneMask andMask(LaneMask a, LaneMask b) { return Lanes(_mm_and_ps(a.v(), b.v())); }
-inline LaneMask andNotMask(LaneMask notThis, LaneMask b) { return Lanes(_mm_andnot_ps(notThis.v(), b.v())); }
 inline LaneMask orMask(LaneMask a, LaneMask b) { return Lanes(_mm_or_ps(a.v(), b.v())); }
 // where ? yes : no, lane by lane.
 inline Lanes select(LaneMask where, Lanes yes, Lanes no) {
@@ -75,7 +73,6 @@ inline Lanes operator*(Lanes a, Lanes b) { GUARDIAN_LANEWISE(a.v[i] * b.v[i]); }
 inline Lanes operator/(Lanes a, Lanes b) { GUARDIAN_LANEWISE(a.v[i] / b.v[i]); }
 inline Lanes operator-(Lanes a) { GUARDIAN_LANEWISE(-a.v[i]); }
 inline Lanes maxOf(Lanes a, Lanes b) { GUARDIAN_LANEWISE(a.v[i] < b.v[i] ? b.v[i] : a.v[i]); }
-inline Lanes minOf(Lanes a, Lanes b) { GUARDIAN_LANEWISE(b.v[i] < a.v[i] ? b.v[i] : a.v[i]); }
 #undef GUARDIAN_LANEWISE
 #define GUARDIAN_MASKWISE(expr)                                                                              \
     LaneMask r;                                                                                              \
@@ -83,7 +80,6 @@ inline Lanes minOf(Lanes a, Lanes b) { GUARDIAN_LANEWISE(b.v[i] < a.v[i] ? b.v[i
     return r
 inline LaneMask less(Lanes a, Lanes b) { GUARDIAN_MASKWISE(a.v[i] < b.v[i]); }
 inline LaneMask andMask(LaneMask a, LaneMask b) { GUARDIAN_MASKWISE(a.v[i] && b.v[i]); }
-inline LaneMask andNotMask(LaneMask notThis, LaneMask b) { GUARDIAN_MASKWISE(!notThis.v[i] && b.v[i]); }
 inline LaneMask orMask(LaneMask a, LaneMask b) { GUARDIAN_MASKWISE(a.v[i] || b.v[i]); }
 #undef GUARDIAN_MASKWISE
 inline Lanes select(LaneMask where, Lanes yes, Lanes no) {
