@@ -1,27 +1,69 @@
-// CollisionGeometry.cpp - body binding, the body-lifetime watch and space membership of a geometry.
+// CollisionGeometry.cpp - body binding, the body-lifetime watch (one index of bound geometry for all) and
+// space membership of a geometry.
 #include "CollisionGeometry.h"
 #include "SimpleCollisionSpace.h"
 #include "iRigidBody.h"
 #include "iUtilities.h"
 
 #include <string>
+#include <unordered_map>
 
-CollisionGeometry::CollisionGeometry() { watchRigidBodies(&CollisionGeometry::onBodyDestroyed, this); }
+namespace {
 
-CollisionGeometry::~CollisionGeometry() {
-    unwatchRigidBodies(&CollisionGeometry::onBodyDestroyed, this);
-    if (m_body) m_body->getDynamics().removeShapeMass(this);
+// Which geometries are bound to which body. One watcher for all geometry: a dying body finds just its own
+// geometries, so deleting N bodies costs O(N) rather than O(N x geometries) (a watcher per geometry did).
+class GeometryBodyIndex {
+public:
+    GeometryBodyIndex() { watchRigidBodies(&GeometryBodyIndex::onBodyDestroyed, this); }
+    void add(const iRigidBody* b, CollisionGeometry* g) {
+        if (b) m_bound.emplace(b, g);
+    }
+    void remove(const iRigidBody* b, const CollisionGeometry* g) {
+        if (!b) return;
+        const auto range = m_bound.equal_range(b);
+        for (auto it = range.first; it != range.second; ++it)
+            if (it->second == g) {
+                m_bound.erase(it);
+                return;
+            }
+    }
+
+private:
+    static void onBodyDestroyed(const iRigidBody* dying, void* self) {
+        auto& bound = static_cast<GeometryBodyIndex*>(self)->m_bound;
+        const auto range = bound.equal_range(dying);
+        for (auto it = range.first; it != range.second; ++it) CollisionGeometry::bodyDestroyed(*it->second);
+        bound.erase(range.first, range.second);
+    }
+    std::unordered_multimap<const iRigidBody*, CollisionGeometry*> m_bound;
+};
+
+// Never destroyed: a geometry with static storage duration may outlive any other static.
+GeometryBodyIndex& geometryBodyIndex() {
+    static auto* index = new GeometryBodyIndex;
+    return *index;
 }
 
-void CollisionGeometry::onBodyDestroyed(const iRigidBody* dying, void* self) {
-    auto* g = static_cast<CollisionGeometry*>(self);
-    if (g->m_body != dying) return;
-    g->m_body = nullptr; // the body is going: its dynamics are not touched
-    g->m_state.hasPrevious = false;
+} // namespace
+
+CollisionGeometry::~CollisionGeometry() {
+    if (m_body) {
+        geometryBodyIndex().remove(m_body, this);
+        m_body->getDynamics().removeShapeMass(this);
+    }
+}
+
+void CollisionGeometry::bodyDestroyed(CollisionGeometry& g) {
+    g.m_body = nullptr; // the body is going: its dynamics are not touched
+    g.m_state.hasPrevious = false;
 }
 
 void CollisionGeometry::bind(iRigidBody* rb) {
-    if (m_body && m_body != rb) m_body->getDynamics().removeShapeMass(this);
+    if (m_body != rb) {
+        if (m_body) m_body->getDynamics().removeShapeMass(this);
+        geometryBodyIndex().remove(m_body, this);
+        geometryBodyIndex().add(rb, this);
+    }
     m_body = rb;
     m_state.hasPrevious = false;
     shapeChanged();

@@ -15,6 +15,7 @@
 #include "iUserPointer.h"
 
 #include <cstdint>
+#include <list>
 #include <vector>
 
 class iRigidBody;
@@ -69,6 +70,8 @@ public:
         int entry = -1;               // its entry in the space (SimpleCollisionSpace::Entry), once laid out
         int proxy = -1;               // its broadphase proxy, if the space's broadphase keeps one
         unsigned long long order = 0; // when it joined the space (increasing along the space's list)
+        std::list<iCollisionGeometry*>::iterator listed; // its place in the space's list (while a member)
+        int member = -1;                                 // its place among the space's members
         Vector previousOrigin;
         Matrix previousRotation = Matrix(1);
     };
@@ -88,9 +91,11 @@ public:
     // Binds to rb (nullptr: none). The geometry's solid moves from the old body's shape to rb's, so an
     // inertia the engine derives follows it (RBDynamics.h).
     void bind(iRigidBody* rb);
+    // Its body is being destroyed (rigidBodyDestroyed): unbound without touching the body's dynamics.
+    static void bodyDestroyed(CollisionGeometry& g);
 
 protected:
-    CollisionGeometry();
+    CollisionGeometry() = default;
     virtual ~CollisionGeometry();
     // Joins the default space (called by the factories once the object is complete). A factory passes its
     // name: with no default space the new geometry joins none, and that is reported with error().
@@ -109,7 +114,6 @@ private:
     bool m_sensor = false;
     SpaceState m_state;
     iCollisionSpace* m_space = nullptr;
-    static void onBodyDestroyed(const iRigidBody* dying, void* self);
 };
 
 // Implements the iCollisionGeometry functions every concrete geometry shares.

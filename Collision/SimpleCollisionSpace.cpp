@@ -44,11 +44,14 @@ bool SimpleCollisionSpace::add(iCollisionGeometry* o) {
         }
         old->remove(o); // a geometry is in one space at a time: adding moves it
     }
-    m_geometry.push_back(o);
-    m_members.push_back(g);
+    settleRemovals(); // a new geometry may have a removed one's address
     g->setSpace(this);
-    g->spaceState() = CollisionGeometry::SpaceState();
-    g->spaceState().order = ++m_joined;
+    CollisionGeometry::SpaceState& st = g->spaceState();
+    st = CollisionGeometry::SpaceState();
+    st.order = ++m_joined;
+    st.listed = m_geometry.insert(m_geometry.end(), o);
+    st.member = int(m_members.size());
+    m_members.push_back(g);
     ++m_membership;
     m_layoutDirty = true;
     return true;
@@ -74,26 +77,40 @@ void SimpleCollisionSpace::remove(iCollisionGeometry* o) {
 void SimpleCollisionSpace::removeNow(CollisionGeometry* g) {
     ++m_membership;
     m_layoutDirty = true;
-    m_geometry.remove(g->asInterface());
-    m_members.erase(std::find(m_members.begin(), m_members.end(), g));
+    CollisionGeometry::SpaceState& st = g->spaceState();
+    m_geometry.erase(st.listed);
+    m_members[size_t(st.member)] = nullptr;
     m_broadphase->forget(g);
-    forgetEventsOf(g);
+    m_gone.push_back(reinterpret_cast<std::uintptr_t>(g));
+    g->setSpace(nullptr);
+    st = CollisionGeometry::SpaceState();
+}
+
+void SimpleCollisionSpace::settleRemovals() {
+    if (m_gone.empty() || m_notifying) return; // (nothing is removed while notifying: it is queued)
+    std::sort(m_gone.begin(), m_gone.end());
+    size_t kept = 0;
+    for (CollisionGeometry* g : m_members)
+        if (g) {
+            g->spaceState().member = int(kept);
+            m_members[kept++] = g;
+        }
+    m_members.resize(kept);
     // The contact list outlives the call that built it (a scene reads it after its force generators ran,
     // and they may delete geometry): no contact may name a geometry that is no longer here.
-    size_t keep = 0;
+    kept = 0;
     for (size_t i = 0; i < m_contacts.size(); ++i) {
-        const CollisionContact& c = m_contacts[i];
-        if (c.g1 == g->asInterface() || c.g2 == g->asInterface()) continue;
-        m_contacts[keep] = c;
-        m_features[keep] = m_features[i];
-        m_contactGeoms[keep] = m_contactGeoms[i];
-        ++keep;
+        if (isGone(m_contactGeoms[i].first) || isGone(m_contactGeoms[i].second)) continue;
+        m_contacts[kept] = m_contacts[i];
+        m_features[kept] = m_features[i];
+        m_contactGeoms[kept] = m_contactGeoms[i];
+        ++kept;
     }
-    m_contacts.resize(keep);
-    m_features.resize(keep);
-    m_contactGeoms.resize(keep);
-    g->setSpace(nullptr);
-    g->spaceState() = CollisionGeometry::SpaceState();
+    m_contacts.resize(kept);
+    m_features.resize(kept);
+    m_contactGeoms.resize(kept);
+    forgetEventsOfGone();
+    m_gone.clear();
 }
 
 bool SimpleCollisionSpace::deferDelete(CollisionGeometry* g) {
@@ -345,6 +362,7 @@ bool SimpleCollisionSpace::gatherEntry(Entry& e, bool continuous) {
 }
 
 void SimpleCollisionSpace::populateContactList(float delta) {
+    settleRemovals();
     if (m_notifying || m_populating) {
         error(L"iCollisionSpace::populateContactList: called from inside a listener; ignored");
         return;
@@ -441,6 +459,7 @@ void SimpleCollisionSpace::gatherEntries(bool continuous) {
 }
 
 size_t SimpleCollisionSpace::findCandidatePairs() {
+    settleRemovals();
     if (m_notifying || m_populating) return 0;
     ++m_call;
     gatherEntries(false);

@@ -35,6 +35,7 @@
 #include "iShapeCast.h"
 #include "iSnapshots.h"
 
+#include <algorithm>
 #include <cstdint>
 #include <list>
 #include <memory>
@@ -66,10 +67,15 @@ public:
     const std::list<iCollisionGeometry*>& getAttachedGeometry() override { return m_geometry; }
     void populateContactList(float delta) override;
     const CollisionContact* getContactList() const override {
+        settle();
         return m_contacts.empty() ? nullptr : m_contacts.data();
     }
-    size_t getNumContacts() const override { return m_contacts.size(); }
+    size_t getNumContacts() const override {
+        settle();
+        return m_contacts.size();
+    }
     const unsigned* getContactFeatureIds() const override {
+        settle();
         return m_features.empty() ? nullptr : m_features.data();
     }
     bool rayCast(const Vector& origin, const Vector& direction, float maxDistance, RayHit& hit) override;
@@ -158,6 +164,16 @@ public:
 private:
     ~SimpleCollisionSpace();
     void removeNow(CollisionGeometry* g);
+    // Removal is O(1) (removeNow); the lists that may still name removed geometry (members, contacts, the
+    // touching and event pairs) are cleaned in one pass over them at the next call that reads them, so
+    // deleting N geometries costs O(N + lists), not O(N x lists). Every public call begins with it.
+    void settleRemovals();
+    // The same from a const call: what it changes is invisible from outside (the removed geometry is
+    // already gone as far as any caller can tell).
+    void settle() const { const_cast<SimpleCollisionSpace*>(this)->settleRemovals(); }
+    bool isGone(const void* p) const { // removed since the last settleRemovals (m_gone sorted)
+        return std::binary_search(m_gone.begin(), m_gone.end(), reinterpret_cast<std::uintptr_t>(p));
+    }
     bool gatherEntry(Entry& e, bool continuous);
     void placeShapes(Entry& e);          // m_newShapes becomes e's shapes in m_shapes
     void layOutEntries();                // one entry per member again, cached ones carried over
@@ -173,12 +189,12 @@ private:
     // now or held for deliverEvents.
     void carryRestingPairs();
     void reportTouching();
-    void forgetEventsOf(const CollisionGeometry* g);
+    void forgetEventsOfGone(); // the removed geometry (m_gone) out of the touching and event pairs
     void finishNotifications();
     // SpaceContactEvents.cpp: the pairs touching in notices, then begin/persist/end against the last ones.
     void gatherContactPairs(const std::vector<Notice>& notices);
     void deliverContactEvents();
-    void forgetContactPairsOf(const CollisionGeometry* g);
+    void forgetContactPairsOfGone();
     static void onBodyDestroyed(const iRigidBody* dying, void* self);
     bool queryShapes(iCollisionGeometry* ig, std::vector<gcol::WorldShape>& out);
     // SpaceShapeCast.cpp
@@ -234,7 +250,9 @@ private:
     unsigned long long m_joined = 0;     // geometries added so far (SpaceState::order)
     unsigned long long m_membership = 0; // changes with every geometry added or removed (snapshots)
     std::list<iCollisionGeometry*> m_geometry;
-    std::vector<CollisionGeometry*> m_members; // the same geometry in the same order, without a cast each
+    // The same geometry in the same order, without a cast each (nullptr: removed, until settleRemovals).
+    std::vector<CollisionGeometry*> m_members;
+    std::vector<std::uintptr_t> m_gone; // geometry removed since the last settleRemovals, by address
     std::vector<CollisionContact> m_contacts;
     std::vector<unsigned> m_features;
     // Each contact's two geometries as this space's own records (so that no contact is cross-cast back).

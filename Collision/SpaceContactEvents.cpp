@@ -152,19 +152,20 @@ void SimpleCollisionSpace::deliverContactEvents() {
     finishNotifications();
 }
 
-void SimpleCollisionSpace::forgetContactPairsOf(const CollisionGeometry* g) {
-    const auto self = reinterpret_cast<std::uintptr_t>(g);
+void SimpleCollisionSpace::forgetContactPairsOfGone() {
     for (auto* list : {&m_active, &m_current})
         for (ActivePair& p : *list) {
-            if (p.gA == g) {
+            if (isGone(p.gA)) {
                 p.gA = nullptr;
                 p.pair.geometryA = nullptr;
             }
-            if (p.gB == g) {
+            if (isGone(p.gB)) {
                 p.gB = nullptr;
                 p.pair.geometryB = nullptr;
             }
-            if (p.lo == self || p.hi == self) p.gone = true; // a bodiless side: the side itself went
+            // A bodiless side is the geometry itself: it went.
+            if (isGone(reinterpret_cast<const void*>(p.lo)) || isGone(reinterpret_cast<const void*>(p.hi)))
+                p.gone = true;
         }
 }
 

@@ -90,6 +90,7 @@ void spaceDrawShape(iDebugDraw& out, const gcol::WorldShape& s, DebugColour colo
 } // namespace
 
 void SimpleCollisionSpace::debugDraw(iDebugDraw& out, unsigned flags) const {
+    settle();
     // Every drawable geometry's shapes at its current pose, as the queries see them; planes wait until the
     // bounds of everything else are known.
     struct Drawn {

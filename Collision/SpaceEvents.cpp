@@ -71,6 +71,7 @@ void SimpleCollisionSpace::reportTouching() {
 }
 
 void SimpleCollisionSpace::deliverEvents() {
+    settleRemovals();
     if (m_notifying || m_populating) {
         error(L"iCollisionEvents::deliverEvents: called from inside a listener; ignored");
         return;
@@ -87,9 +88,9 @@ void SimpleCollisionSpace::deliverEvents() {
     deliverContactEvents();
 }
 
-void SimpleCollisionSpace::forgetEventsOf(const CollisionGeometry* g) {
-    auto involves = [g](const Notice& n) { return n.g1 == g || n.g2 == g; };
+void SimpleCollisionSpace::forgetEventsOfGone() {
+    auto involves = [this](const Notice& n) { return isGone(n.g1) || isGone(n.g2); };
     m_touching.erase(std::remove_if(m_touching.begin(), m_touching.end(), involves), m_touching.end());
     m_held.erase(std::remove_if(m_held.begin(), m_held.end(), involves), m_held.end());
-    forgetContactPairsOf(g);
+    forgetContactPairsOfGone();
 }

@@ -22,6 +22,7 @@ bool SimpleCollisionSpace::queryShapes(iCollisionGeometry* ig, std::vector<gcol:
 
 bool SimpleCollisionSpace::rayCast(const Vector& origin, const Vector& direction, float maxDistance,
                                    RayHit& hit) {
+    settleRemovals();
     float len = direction.length();
     if (!origin.isFinite() || !direction.isFinite() || !(len > 0.0f) || std::isnan(maxDistance)) {
         error(L"iCollisionSpace::rayCast: origin and direction must be finite, direction non-zero");
@@ -75,6 +76,7 @@ size_t overlapWith(SimpleCollisionSpace& space, const std::vector<CollisionGeome
 
 size_t SimpleCollisionSpace::overlapSphere(const Vector& centre, float radius,
                                            std::vector<iCollisionGeometry*>& out) {
+    settleRemovals();
     if (!centre.isFinite() || !(std::isfinite(radius) && radius >= 0.0f)) {
         error(L"iCollisionSpace::overlapSphere: centre and radius must be finite, radius >= 0");
         out.clear();
@@ -92,6 +94,7 @@ size_t SimpleCollisionSpace::overlapSphere(const Vector& centre, float radius,
 
 size_t SimpleCollisionSpace::overlapBox(const Vector& centre, const Matrix& orientation,
                                         const Vector& halfExtents, std::vector<iCollisionGeometry*>& out) {
+    settleRemovals();
     if (!centre.isFinite() || !isRotation(orientation, 1e-3f) || !halfExtents.isFinite() ||
         halfExtents.x < 0 || halfExtents.y < 0 || halfExtents.z < 0) {
         error(L"iCollisionSpace::overlapBox: needs a finite centre, a rotation and half extents >= 0");
@@ -113,6 +116,7 @@ size_t SimpleCollisionSpace::overlapBox(const Vector& centre, const Matrix& orie
 
 size_t SimpleCollisionSpace::overlapAABB(const Vector& min, const Vector& max,
                                          std::vector<iCollisionGeometry*>& out) {
+    settleRemovals();
     if (!min.isFinite() || !max.isFinite() || max.x < min.x || max.y < min.y || max.z < min.z) {
         error(L"iCollisionSpace::overlapAABB: min and max must be finite with min <= max");
         out.clear();

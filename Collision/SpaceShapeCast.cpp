@@ -63,6 +63,7 @@ gcol::WorldShape shifted(gcol::WorldShape s, const Vector& d) {
 } // namespace
 
 size_t SimpleCollisionSpace::sweepBodies(BodySweep* sweeps, size_t count) {
+    settleRemovals();
     if (m_notifying || m_populating) {
         error(L"iShapeCast::sweepBodies: called from inside a listener; ignored");
         return 0;

@@ -31,6 +31,7 @@ public:
 } // namespace
 
 iSnapshot* SimpleCollisionSpace::takeSnapshot() const {
+    settle();
     if (m_notifying) {
         error(L"iSnapshots::takeSnapshot: the space is notifying listeners; take it after the update");
         return nullptr;
@@ -48,6 +49,7 @@ iSnapshot* SimpleCollisionSpace::takeSnapshot() const {
 }
 
 bool SimpleCollisionSpace::restoreSnapshot(const iSnapshot* snapshot) {
+    settleRemovals();
     const SpaceSnapshot* s = dynamic_cast<const SpaceSnapshot*>(snapshot);
     if (!s || s->owner != this) {
         error(L"iSnapshots::restoreSnapshot: not a snapshot of this space; refused");

@@ -324,3 +324,72 @@ TEST_F(SpaceTest, FeatureIdsParallelTheContactsAndPersist) {
     g->Delete();
     c->Delete();
 }
+
+// Removal is O(1) and the lists are cleaned at the next read: what the game reads is exactly the list
+// before, less every contact naming a removed geometry, in the same order; the members keep their order.
+TEST_F(SpaceTest, RemovedGeometryLeavesExactlyItsContactsAndTheRestInOrder) {
+    std::vector<std::unique_ptr<UserBody>> bodies;
+    std::vector<iCollisionGeometry*> row;
+    for (int i = 0; i < 12; ++i) { // a row of touching unit spheres: contacts i-(i+1)
+        bodies.push_back(std::make_unique<UserBody>(Vector(1.8f * float(i), 0, 0)));
+        row.push_back(CreateCSphere(bodies.back().get(), 1.0f));
+    }
+    space->populateContactList(0);
+    const std::vector<CollisionContact> before(space->getContactList(),
+                                               space->getContactList() + space->getNumContacts());
+    ASSERT_EQ(before.size(), 11u);
+    std::vector<iCollisionGeometry*> removed = {row[1], row[4], row[5], row[9]};
+    row[1]->Delete();
+    space->remove(row[4]);
+    row[5]->Delete();
+    space->remove(row[9]);
+    std::vector<CollisionContact> expected;
+    for (const CollisionContact& c : before)
+        if (!contains(removed, c.g1) && !contains(removed, c.g2)) expected.push_back(c);
+    ASSERT_EQ(space->getNumContacts(), expected.size());
+    for (size_t i = 0; i < expected.size(); ++i) {
+        EXPECT_EQ(space->getContactList()[i].g1, expected[i].g1);
+        EXPECT_EQ(space->getContactList()[i].g2, expected[i].g2);
+        EXPECT_EQ(space->getContactList()[i].pos.x, expected[i].pos.x);
+    }
+    std::vector<iCollisionGeometry*> members(space->getAttachedGeometry().begin(),
+                                             space->getAttachedGeometry().end());
+    std::vector<iCollisionGeometry*> kept;
+    for (iCollisionGeometry* g : row)
+        if (!contains(removed, g)) kept.push_back(g);
+    EXPECT_EQ(members, kept);
+    // Added back, a removed geometry joins at the end and collides again: the next list is a fresh one's.
+    EXPECT_TRUE(space->add(row[4]));
+    EXPECT_EQ(space->getAttachedGeometry().back(), row[4]);
+    space->populateContactList(0);
+    size_t naming4 = 0;
+    for (size_t i = 0; i < space->getNumContacts(); ++i)
+        naming4 += space->getContactList()[i].g1 == row[4] || space->getContactList()[i].g2 == row[4];
+    EXPECT_EQ(naming4, 1u);                 // its neighbour 3 (5 is deleted)
+    EXPECT_EQ(space->getNumContacts(), 5u); // 2-3, 3-4, 6-7, 7-8, 10-11 (9 is out)
+    for (iCollisionGeometry* g : row)
+        if (g != row[1] && g != row[5]) g->Delete();
+}
+
+// One watcher serves all geometry: a body's death reaches only its own geometries, whatever their number
+// (a watcher per geometry made deleting N bodies cost N x geometries).
+TEST_F(SpaceTest, GeometryAddsNoBodyWatcherAndABodysDeathUnbindsOnlyItsOwn) {
+    UserBody other(Vector(10, 0, 0));
+    iCollisionGeometry* first = CreateCSphere(&other, 1.0f); // the index exists from here on
+    const size_t watchers = guardian_detail::rigidBodyWatchers().size();
+    auto* dying = new UserBody(Vector(0, 0, 0));
+    std::vector<iCollisionGeometry*> own, others;
+    for (int i = 0; i < 50; ++i) {
+        own.push_back(CreateCSphere(dying, 0.5f));
+        others.push_back(CreateCOBB(&other, Vector(0.5f, 0.5f, 0.5f)));
+    }
+    EXPECT_EQ(guardian_detail::rigidBodyWatchers().size(), watchers);
+    own[7]->attach(&other); // rebound: no longer the dying body's
+    dying->Delete();
+    for (size_t i = 0; i < own.size(); ++i) EXPECT_EQ(own[i]->getRigidBody(), i == 7 ? &other : nullptr) << i;
+    for (iCollisionGeometry* g : others) EXPECT_EQ(g->getRigidBody(), &other);
+    for (iCollisionGeometry* g : own) g->Delete();
+    for (iCollisionGeometry* g : others) g->Delete();
+    first->Delete();
+    EXPECT_EQ(guardian_detail::rigidBodyWatchers().size(), watchers);
+}
