@@ -251,6 +251,7 @@ bool SimpleCollisionSpace::gatherEntry(Entry& e, bool continuous) {
         return false;
     }
     const RBDynamics* d = body ? &body->getDynamics() : nullptr;
+    c.dynamics = d;
     const RBDynamics* root = d ? d->attachmentRoot() : nullptr;
     const unsigned version = g->shapeVersion();
     bool same = c.valid && e.body == body && c.shapeVersion == version; // never for a plane
@@ -445,11 +446,39 @@ void SimpleCollisionSpace::layOutEntries() {
     m_layoutDirty = false;
 }
 
+namespace {
+
+constexpr int kFetchAhead = 12; // entries
+// Asks for the cache line at p to be loaded (a hint: no effect where the compiler has no such builtin).
+inline void fetchAhead(const void* p) {
+#if defined(__GNUC__) || defined(__clang__)
+    __builtin_prefetch(p);
+#else
+    (void)p;
+#endif
+}
+
+} // namespace
+
 void SimpleCollisionSpace::gatherEntries(bool continuous) {
     m_relaid = m_layoutDirty;
     if (m_layoutDirty) layOutEntries();
     m_changed.clear();
-    for (int i = 0; i < int(m_entries.size()); ++i) {
+    const int n = int(m_entries.size());
+    for (int i = 0; i < n; ++i) {
+        // The entries are walked in order, but each one's geometry, body and dynamics lie elsewhere: asked
+        // for a few entries ahead, they arrive while this one is gathered (a call where nothing moved is
+        // otherwise mostly waiting for them). A hint only: an address no longer valid is never read.
+        if (i + kFetchAhead < n) {
+            const Entry& ahead = m_entries[size_t(i + kFetchAhead)];
+            fetchAhead(ahead.g);
+            fetchAhead(ahead.body);
+            if (const char* d = reinterpret_cast<const char*>(ahead.cache.dynamics)) {
+                fetchAhead(d);
+                fetchAhead(d + 64);
+                fetchAhead(d + 128);
+            }
+        }
         Entry& e = m_entries[size_t(i)];
         const bool was = e.active;
         const gcol::Aabb box = e.box;

@@ -144,8 +144,9 @@ public:
             unsigned shapeVersion = 0, sizedVersion = 0;
             float bound = 0.0f, selfAngle = 0.0f; // bounding radius; rotationAngle(rotation, rotation)
             Vector rawPosition, rawCom, rawRows[3];
-            gcol::Aabb tight; // its shapes' box at the pose
-            int capacity = 0; // shapes m_shapes holds for it from first on
+            gcol::Aabb tight;                     // its shapes' box at the pose
+            int capacity = 0;                     // shapes m_shapes holds for it from first on
+            const RBDynamics* dynamics = nullptr; // its body's at the last call (only to fetch ahead)
         } cache;
         int first = 0, last = 0;   // its shapes in m_shapes
         Vector origin, prevOrigin; // the previous pose: set (and read) only in a call with sampling on
