@@ -55,6 +55,7 @@ bool PhysicsScene::add(iRigidBody* o) {
         error(L"PhysicsScene::add: the body is in another scene; remove it there first");
         return false;
     }
+    b->sceneSlot = int(m_bodies.size());
     m_bodies.push_back(b);
     m_byDynamics[&b->getDynamics()] = b;
     ++m_membership;
@@ -239,7 +240,7 @@ void PhysicsScene::update(int now) {
 void PhysicsScene::writeFrames(float alpha) {
     const unsigned long long round = RigidBody::newFrameRound(); // parents' frames before their children's
     RigidBody::PoseCache poses;                                  // no game code runs while frames are written
-    for (RigidBody* b : m_bodies)
+    for (RigidBody* b : bodies())
         if (!b->dying() && !b->pendingRemoval) b->writeFrameAfterParent(alpha, round);
 }
 
@@ -255,8 +256,8 @@ void PhysicsScene::step(float dt) {
     //    now is where this step's interpolation starts. An inertia tensor the engine derives catches up with
     //    the mass and com the game may have written (RBDynamics.h); integrateComposite then keeps the angular
     //    velocity.
-    for (size_t i = 0; i < m_bodies.size(); ++i) {
-        RigidBody* b = m_bodies[i];
+    for (size_t i = 0; i < bodies().size(); ++i) {
+        RigidBody* b = bodies()[i];
         if (b->dying() || b->pendingRemoval) continue;
         b->getDynamics().updateInertia();
         if (b->asleep() && !b->editedWhileAsleep()) continue;
@@ -265,10 +266,10 @@ void PhysicsScene::step(float dt) {
         if (m_validationOn && b->validate("before a step")) b->snapshotValid(); // valid edits kept on failure
     }
     if (m_sleeping)
-        m_islands.wakeIslandMates(m_bodies); // a sleeping island wakes whole, before the space looks
+        m_islands.wakeIslandMates(bodies()); // a sleeping island wakes whole, before the space looks
     { // After every edit is in (a root's adopted frame moves its chain): world poses, O(1) a body.
         RigidBody::PoseCache poses;
-        for (RigidBody* b : m_bodies)
+        for (RigidBody* b : bodies())
             if (!b->dying() && !b->pendingRemoval) {
                 if (b->movedByGame()) b->getDynamics().markTeleported(); // spaces do not sweep across it
                 b->recordPreviousPose();
@@ -290,12 +291,12 @@ void PhysicsScene::step(float dt) {
     //    wave, each layer starting cold under the weight above). The pairs among the woken were not tested
     //    (both slept): the contacts are found again.
     if (m_sleeping) {
-        m_islands.build(m_bodies, m_byDynamics, contacts, contactCount);
+        m_islands.build(bodies(), m_byDynamics, contacts, contactCount);
         joinJointIslands(); // jointed bodies sleep and wake together
-        m_islands.wakeTouched(m_bodies);
-        if (m_islands.wakeIslandMates(m_bodies) && m_spaceVersion == spaceVersion) {
+        m_islands.wakeTouched(bodies());
+        if (m_islands.wakeIslandMates(bodies()) && m_spaceVersion == spaceVersion) {
             findContacts(dt, spaceVersion, contacts, contactCount);
-            m_islands.build(m_bodies, m_byDynamics, contacts, contactCount);
+            m_islands.build(bodies(), m_byDynamics, contacts, contactCount);
             joinJointIslands();
         }
     }
@@ -314,8 +315,8 @@ void PhysicsScene::step(float dt) {
     // 6. Forces on each awake composite (unattached bodies and attachment roots; attached bodies ride
     //    along). A free body is moved by the game's integrator; for one the solver moves, the integrator
     //    only works out what the forces do to its velocities.
-    for (size_t i = 0; i < m_bodies.size(); ++i) {
-        RigidBody* b = m_bodies[i];
+    for (size_t i = 0; i < bodies().size(); ++i) {
+        RigidBody* b = bodies()[i];
         if (b->dying() || b->pendingRemoval || b->asleep() || b->getDynamics().attachedTo()) continue;
         integrateComposite(b, dt);
     }
@@ -338,24 +339,24 @@ void PhysicsScene::step(float dt) {
 
     // 7b. Continuous collision: a body whose motion passed into or through something goes back to where it
     //     first touched it; the next step resolves that contact (ContinuousStage.h).
-    if (m_continuousOn) m_continuous.run(m_bodies, m_space);
+    if (m_continuousOn) m_continuous.run(bodies(), m_space);
     m_profiler.lap(&PhysicsProfile::continuous);
 
     // 8. A step that produced NaN or Inf (absurd forces) is undone; otherwise it is the new valid state.
-    for (size_t i = 0; m_validationOn && i < m_bodies.size(); ++i) {
-        RigidBody* b = m_bodies[i];
+    for (size_t i = 0; m_validationOn && i < bodies().size(); ++i) {
+        RigidBody* b = bodies()[i];
         if (b->dying() || b->pendingRemoval || b->asleep()) continue;
         if (b->validate("after a step")) b->snapshotValid();
     }
     {
         RigidBody::PoseCache poses;
-        for (RigidBody* b : m_bodies)
+        for (RigidBody* b : bodies())
             if (!b->dying() && !b->pendingRemoval && !b->asleep()) b->recordStepPose();
     }
 
     // 9. Islands that rested long enough fall asleep.
     //    RBDynamics::sleeping tells the collision space which pairs need no test.
-    if (m_sleeping) m_islands.updateSleep(m_bodies, dt);
+    if (m_sleeping) m_islands.updateSleep(bodies(), dt);
 
     // 10. Joints that broke are heard of; then removals and deletions requested during the step.
     deliverJointBreaks();
@@ -371,7 +372,7 @@ void PhysicsScene::step(float dt) {
 void PhysicsScene::countProfile() {
     PhysicsProfile& p = m_profiler.current();
     if (p.steps == 0) return;
-    p.bodies = m_bodies.size();
+    p.bodies = bodies().size();
     p.awakeBodies = getAwakeBodyCount();
     p.touchingPairs = m_lastStepSolved ? m_solver.manifolds().size() : 0;
     p.solverRows = 0;

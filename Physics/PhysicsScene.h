@@ -66,7 +66,7 @@ public:
     int getMaxStepsPerUpdate() const override { return m_maxSteps; }
     bool setIntegrator(Integrator i) override;
     Integrator getIntegrator() const override { return m_integrator; }
-    size_t getBodyCount() const override { return m_bodies.size(); }
+    size_t getBodyCount() const override { return bodies().size(); }
     long long getStepCount() const override { return m_steps; }
     long long getDroppedStepCount() const override { return m_dropped; }
     bool addFixedUpdater(iFixedUpdater* u) override;
@@ -138,7 +138,16 @@ private:
     void letJointsGo(RigidBody* b);
     RigidBody* sceneBody(const iRigidBody* o) const; // o if it is one of this scene's bodies, else nullptr
 
-    std::vector<RigidBody*> m_bodies;
+    // The scene's bodies in the order they joined. A body leaving is only cleared from its slot (O(1), so
+    // that deleting N bodies costs O(N)); the list closes up at the next read, through bodies().
+    std::vector<RigidBody*>& bodies() {
+        if (m_bodyHoles > 0) closeUpBodies();
+        return m_bodies;
+    }
+    const std::vector<RigidBody*>& bodies() const { return const_cast<PhysicsScene*>(this)->bodies(); }
+    void closeUpBodies();
+    std::vector<RigidBody*> m_bodies; // read through bodies(): it may hold nullptr where a body left
+    size_t m_bodyHoles = 0;
     std::unordered_map<const RBDynamics*, RigidBody*> m_byDynamics;
     // What the end of the step does, last queued first: every deferred removal and deletion
     // (SceneLifetime.cpp).

@@ -73,7 +73,7 @@ bool PhysicsScene::setRestitutionRule(CombineRule r) {
 void PhysicsScene::setSleepingEnabled(bool on) {
     m_sleeping = on;
     if (!on)
-        for (RigidBody* b : m_bodies) {
+        for (RigidBody* b : bodies()) {
             b->setAsleep(false);
             b->restTime = 0;
         }
@@ -81,7 +81,7 @@ void PhysicsScene::setSleepingEnabled(bool on) {
 
 size_t PhysicsScene::getAwakeBodyCount() const {
     size_t awake = 0;
-    for (const RigidBody* b : m_bodies)
+    for (const RigidBody* b : bodies())
         if (!b->asleep() && b->getDynamics().physicsType != PHYS_FixedInSpace) ++awake;
     return awake;
 }

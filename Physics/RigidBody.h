@@ -110,6 +110,7 @@ public:
     void writeFrameAfterParent(float alpha, unsigned long long round);
     static unsigned long long newFrameRound();
     bool pendingRemoval = false; // remove() during a step, or kill(): skipped now, removed when the step ends
+    int sceneSlot = -1;          // its place in its scene's list of bodies (PhysicsScene::bodies)
     // The world pose (COM, rotation) at the start of the current step.
     const Vector& previousPosition() const { return m_prevPosition; }
     const Quat& previousRotation() const { return m_prevRotation; }

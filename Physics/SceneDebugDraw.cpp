@@ -31,7 +31,7 @@ int sceneDrawFind(std::vector<int>& parent, int i) {
 void PhysicsScene::debugDraw(iDebugDraw& out, unsigned flags) const {
     if (const iDebugDrawable* space = debugDrawOf(m_space)) space->debugDraw(out, flags);
 
-    for (const RigidBody* b : m_bodies) {
+    for (const RigidBody* b : bodies()) {
         if (b->dying()) continue;
         const RBDynamics& d = b->getDynamics();
         const Vector c = d.getWorldPosition();
@@ -54,7 +54,7 @@ void PhysicsScene::debugDraw(iDebugDraw& out, unsigned flags) const {
     std::vector<const RigidBody*> roots;
     std::vector<int> parent;
     std::unordered_map<const RigidBody*, int> index;
-    for (const RigidBody* b : m_bodies) {
+    for (const RigidBody* b : bodies()) {
         const RBDynamics& d = b->getDynamics();
         if (b->dying() || d.attachedTo() || d.physicsType == PHYS_FixedInSpace) continue;
         index.emplace(b, int(roots.size()));

@@ -18,7 +18,7 @@ bool takesPartInStep(const RigidBody* b, const PhysicsScene* scene) {
 
 void PhysicsScene::gatherJoints() {
     m_joints.clear();
-    for (RigidBody* b : m_bodies) {
+    for (RigidBody* b : bodies()) {
         if (b->joints.empty() || !takesPartInStep(b, this)) continue;
         for (Joint* j : b->joints)
             if (j->bodyA() == b && j->acting() && (!j->bodyB() || takesPartInStep(j->bodyB(), this)))

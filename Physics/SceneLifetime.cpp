@@ -44,11 +44,14 @@ PhysicsScene::~PhysicsScene() {
     leaveRegistry();
     // Every body leaves the scene first, so that none calls back into it while being deleted. Bodies owned
     // by a PhysicsFrame, and bodies being removed, survive: their owners delete them.
-    std::vector<RigidBody*> bodies;
-    bodies.swap(m_bodies);
+    std::vector<RigidBody*> leaving;
+    leaving.swap(bodies());
     m_byDynamics.clear();
-    for (RigidBody* b : bodies) b->setScene(nullptr);
-    for (RigidBody* b : bodies) {
+    for (RigidBody* b : leaving) {
+        b->setScene(nullptr);
+        b->sceneSlot = -1;
+    }
+    for (RigidBody* b : leaving) {
         if (b->dying() || (!b->owner() && !b->pendingRemoval))
             b->destroy();
         else
@@ -69,7 +72,7 @@ void PhysicsScene::Delete() const {
     // right after this call, and the step must not write them.
     m_deleteRequested = true;
     self->leaveRegistry();
-    for (RigidBody* b : m_bodies)
+    for (RigidBody* b : bodies())
         if (b->dying() || (!b->owner() && !b->pendingRemoval)) b->markDying();
     if (stepping != this) stepping->m_deferredScenes.push_back(self);
 }
@@ -91,11 +94,27 @@ void PhysicsScene::endSteps() {
 void PhysicsScene::forget(RigidBody* b) {
     b->setAsleep(false); // out of the scene, nobody would wake it
     ++m_membership;
-    m_bodies.erase(std::remove(m_bodies.begin(), m_bodies.end(), b), m_bodies.end());
+    const size_t slot = size_t(b->sceneSlot);
+    if (b->sceneSlot >= 0 && slot < m_bodies.size() && m_bodies[slot] == b) {
+        m_bodies[slot] = nullptr; // the list closes up at its next read (bodies())
+        b->sceneSlot = -1;
+        ++m_bodyHoles;
+    }
     m_byDynamics.erase(&b->getDynamics());
     m_leaving.erase(std::remove_if(m_leaving.begin(), m_leaving.end(),
                                    [b](const std::pair<RigidBody*, Leave>& e) { return e.first == b; }),
                     m_leaving.end());
+}
+
+void PhysicsScene::closeUpBodies() {
+    size_t kept = 0;
+    for (RigidBody* b : m_bodies)
+        if (b) {
+            b->sceneSlot = int(kept);
+            m_bodies[kept++] = b;
+        }
+    m_bodies.resize(kept);
+    m_bodyHoles = 0;
 }
 
 void PhysicsScene::deferRemove(RigidBody* b) {

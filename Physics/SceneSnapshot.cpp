@@ -113,9 +113,9 @@ iSnapshot* PhysicsScene::takeSnapshot() const {
     SceneSnapshot* s = new SceneSnapshot();
     s->owner = this;
     s->membership = m_membership;
-    s->bodies = m_bodies;
-    s->saved.reserve(m_bodies.size());
-    for (const RigidBody* b : m_bodies) s->saved.push_back(b->save());
+    s->bodies = bodies();
+    s->saved.reserve(bodies().size());
+    for (const RigidBody* b : bodies()) s->saved.push_back(b->save());
     s->solver = m_solver.memory();
     s->islands = m_islands.memory();
     s->spaceOwner = m_space;
@@ -126,7 +126,7 @@ iSnapshot* PhysicsScene::takeSnapshot() const {
     s->hasTimeBase = m_hasTimeBase;
     s->steps = m_steps;
     s->dropped = m_dropped;
-    for (const RigidBody* b : m_bodies)
+    for (const RigidBody* b : bodies())
         for (const Joint* j : b->joints)
             if (j->bodyA() == b) s->joints.emplace_back(j, j->state());
     std::sort(s->joints.begin(), s->joints.end(), jointFirst);
@@ -143,7 +143,7 @@ bool PhysicsScene::restoreSnapshot(const iSnapshot* snapshot) {
         error(L"iSnapshots::restoreSnapshot: the scene is updating; refused");
         return false;
     }
-    if (s->membership != m_membership || s->bodies != m_bodies) {
+    if (s->membership != m_membership || s->bodies != bodies()) {
         error(L"iSnapshots::restoreSnapshot: bodies were added, removed or deleted since the snapshot; "
               L"refused");
         return false;
@@ -155,7 +155,7 @@ bool PhysicsScene::restoreSnapshot(const iSnapshot* snapshot) {
     }
     // The space checks its own members first and changes nothing when it refuses.
     if (s->space && !snapshotsOf(m_space)->restoreSnapshot(s->space)) return false;
-    for (size_t i = 0; i < m_bodies.size(); ++i) m_bodies[i]->load(s->saved[i]);
+    for (size_t i = 0; i < bodies().size(); ++i) bodies()[i]->load(s->saved[i]);
     RigidBody::invalidatePoses();
     m_solver.setMemory(s->solver);
     m_islands.setMemory(s->islands);
@@ -165,7 +165,7 @@ bool PhysicsScene::restoreSnapshot(const iSnapshot* snapshot) {
     m_steps = s->steps;
     m_dropped = s->dropped;
     // Joints made since start from nothing; those deleted since are not looked for (only live ones are).
-    for (RigidBody* b : m_bodies)
+    for (RigidBody* b : bodies())
         for (Joint* j : b->joints) {
             if (j->bodyA() != b) continue;
             j->resetImpulses();

@@ -12,7 +12,7 @@ bool PhysicsScene::setFeatureEnabled(SceneFeature f, bool on) {
     switch (f) {
     case FEATURE_Gravity: // a body asleep under the old field would hang in the new one
         if (on != m_gravityOn)
-            for (RigidBody* b : m_bodies) b->wake();
+            for (RigidBody* b : bodies()) b->wake();
         m_gravityOn = on;
         break;
     case FEATURE_Drag:
