@@ -219,3 +219,39 @@ TEST(Lifetime, UserPointersLeadBackToTheGamesObjects) {
     copy->Delete();
     ball->detachListener(&finder);
 }
+
+// A body leaving from the middle of the scene's list clears its slot and the list closes up at its next read:
+// the others keep their order (the solver's order), so a stack whose scene also held two far boxes, removed
+// after ten steps, ends bit for bit where the same stack alone does.
+TEST(Lifetime, BodiesLeavingTheMiddleOfTheListKeepTheOthersOrder) {
+    auto stack = [](bool withFarBoxes) {
+        SceneFixture s;
+        s.world->ground();
+        std::vector<iRigidBody*> kept, far;
+        for (int i = 0; i < 6; ++i) {
+            const bool isFar = i == 1 || i == 3; // joins between the stack's boxes
+            if (isFar && !withFarBoxes) continue;
+            const Vector at =
+                isFar ? Vector(30.0f * float(i), 100.0f, 0) : Vector(0.05f * float(i), 0.5f + float(i), 0);
+            (isFar ? far : kept).push_back(s.world->box(at, Vector(0.5f, 0.5f, 0.5f), 1.0f)->getRB());
+        }
+        s.steps(10);
+        for (iRigidBody* b : far) s.scene->remove(b);
+        EXPECT_EQ(bodies(s.scene), kept.size());
+        s.steps(110);
+        std::vector<Vector> poses;
+        for (iRigidBody* b : kept) poses.push_back(b->getDynamics().position);
+        for (iRigidBody* b : far) s.scene->add(b); // back, so that the World deletes them with the scene's
+        EXPECT_EQ(bodies(s.scene), kept.size() + far.size());
+        return poses;
+    };
+    const std::vector<Vector> alone = stack(false), withFar = stack(true);
+    ASSERT_EQ(alone.size(), 4u);
+    ASSERT_EQ(withFar.size(), 4u);
+    for (size_t i = 0; i < alone.size(); ++i) {
+        EXPECT_EQ(withFar[i].x, alone[i].x) << i;
+        EXPECT_EQ(withFar[i].y, alone[i].y) << i;
+        EXPECT_EQ(withFar[i].z, alone[i].z) << i;
+    }
+    EXPECT_NEAR(alone[3].y, 3.5f, 0.05f); // the stack stands
+}
