@@ -98,17 +98,8 @@ void SimpleCollisionSpace::settleRemovals() {
     m_members.resize(kept);
     // The contact list outlives the call that built it (a scene reads it after its force generators ran,
     // and they may delete geometry): no contact may name a geometry that is no longer here.
-    kept = 0;
-    for (size_t i = 0; i < m_contacts.size(); ++i) {
-        if (isGone(m_contactGeoms[i].first) || isGone(m_contactGeoms[i].second)) continue;
-        m_contacts[kept] = m_contacts[i];
-        m_features[kept] = m_features[i];
-        m_contactGeoms[kept] = m_contactGeoms[i];
-        ++kept;
-    }
-    m_contacts.resize(kept);
-    m_features.resize(kept);
-    m_contactGeoms.resize(kept);
+    keepContacts(
+        [this](const CollisionGeometry* a, const CollisionGeometry* b) { return !isGone(a) && !isGone(b); });
     forgetEventsOfGone();
     m_gone.clear();
 }

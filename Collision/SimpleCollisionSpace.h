@@ -175,6 +175,21 @@ private:
     bool isGone(const void* p) const { // removed since the last settleRemovals (m_gone sorted)
         return std::binary_search(m_gone.begin(), m_gone.end(), reinterpret_cast<std::uintptr_t>(p));
     }
+    // Keeps the contacts (and their features and geometry pairs, in step) whose two geometries keep(g1, g2)
+    // accepts, in their order.
+    template <class Keep> void keepContacts(Keep keep) {
+        size_t kept = 0;
+        for (size_t i = 0; i < m_contacts.size(); ++i) {
+            if (!keep(m_contactGeoms[i].first, m_contactGeoms[i].second)) continue;
+            m_contacts[kept] = m_contacts[i];
+            m_features[kept] = m_features[i];
+            m_contactGeoms[kept] = m_contactGeoms[i];
+            ++kept;
+        }
+        m_contacts.resize(kept);
+        m_features.resize(kept);
+        m_contactGeoms.resize(kept);
+    }
     bool gatherEntry(Entry& e, bool continuous);
     void placeShapes(Entry& e);          // m_newShapes becomes e's shapes in m_shapes
     void layOutEntries();                // one entry per member again, cached ones carried over

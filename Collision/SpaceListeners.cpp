@@ -69,23 +69,12 @@ void SimpleCollisionSpace::finishNotifications() {
             changed = changed || !g1->spaceState().hasPrevious || !g2->spaceState().hasPrevious;
         if (!changed) return;
     }
-    size_t keep = 0;
-    for (size_t i = 0; i < m_contacts.size(); ++i) {
-        CollisionGeometry* g1 = m_contactGeoms[i].first;
-        CollisionGeometry* g2 = m_contactGeoms[i].second;
-        auto alive = [](CollisionGeometry* g) {
-            const CollisionGeometry::SpaceState& st = g->spaceState();
-            return st.hasPrevious && !st.pendingDelete && !st.pendingRemove;
-        };
-        if (!alive(g1) || !alive(g2)) continue;
-        m_contacts[keep] = m_contacts[i];
-        m_features[keep] = m_features[i];
-        m_contactGeoms[keep] = m_contactGeoms[i];
-        ++keep;
-    }
-    m_contacts.resize(keep);
-    m_features.resize(keep);
-    m_contactGeoms.resize(keep);
+    auto alive = [](const CollisionGeometry* g) {
+        const CollisionGeometry::SpaceState& st = g->spaceState();
+        return st.hasPrevious && !st.pendingDelete && !st.pendingRemove;
+    };
+    keepContacts(
+        [&alive](const CollisionGeometry* a, const CollisionGeometry* b) { return alive(a) && alive(b); });
     for (CollisionGeometry* g : m_pendingRemove)
         if (!g->spaceState().pendingDelete) removeNow(g);
     m_pendingRemove.clear();

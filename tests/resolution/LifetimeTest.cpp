@@ -5,6 +5,8 @@
 #include "SceneFixture.h"
 #include "iCSphere.h"
 #include "iCollisionListener.h"
+#include "iDebugDraw.h"
+#include "iDebugDrawable.h"
 #include "iFixedUpdater.h"
 #include "iLifetime.h"
 #include "iPhysicsSceneHooks.h"
@@ -220,9 +222,17 @@ TEST(Lifetime, UserPointersLeadBackToTheGamesObjects) {
     ball->detachListener(&finder);
 }
 
+// Centres of mass in the order the scene draws its bodies (debugDraw walks the scene's list, in join order).
+struct CentreRecorder final : iDebugDraw {
+    std::vector<Vector> centres;
+    void drawLine(const Vector&, const Vector&, DebugColour) override {}
+    void drawText(const Vector&, const char*, DebugColour) override {}
+    void drawPoint(const Vector& at, float, DebugColour) override { centres.push_back(at); }
+};
+
 // A body leaving from the middle of the scene's list clears its slot and the list closes up at its next read:
-// the others keep their order (the solver's order), so a stack whose scene also held two far boxes, removed
-// after ten steps, ends bit for bit where the same stack alone does.
+// the others keep their join order (the scene draws them in it), and a stack whose scene also held two far
+// boxes, removed after ten steps, ends bit for bit where the same stack alone does.
 TEST(Lifetime, BodiesLeavingTheMiddleOfTheListKeepTheOthersOrder) {
     auto stack = [](bool withFarBoxes) {
         SceneFixture s;
@@ -238,6 +248,12 @@ TEST(Lifetime, BodiesLeavingTheMiddleOfTheListKeepTheOthersOrder) {
         s.steps(10);
         for (iRigidBody* b : far) s.scene->remove(b);
         EXPECT_EQ(bodies(s.scene), kept.size());
+        CentreRecorder drawn;
+        debugDrawOf(s.scene)->debugDraw(drawn, DEBUGDRAW_BodyAxes);
+        EXPECT_EQ(drawn.centres.size(), kept.size());
+        for (size_t i = 0; i < kept.size() && i < drawn.centres.size(); ++i)
+            EXPECT_EQ(drawn.centres[i].y, kept[i]->getDynamics().position.y)
+                << "body " << i << " out of order";
         s.steps(110);
         std::vector<Vector> poses;
         for (iRigidBody* b : kept) poses.push_back(b->getDynamics().position);
