@@ -45,6 +45,7 @@ public:
         }
         m_normal = unitNormal(n);
         m_offset = offset;
+        shapeChanged(); // spaces rebuild it, and what slept on it wakes
     }
     void worldShapes(const Vector& origin, const Matrix& r,
                      std::vector<gcol::WorldShape>& out) const override {

@@ -279,6 +279,16 @@ bool SimpleCollisionSpace::gatherEntry(Entry& e, bool continuous) {
     const bool movedSinceLastCall = st.hasPrevious && st.previousBody == body && !prevIsPose &&
                                     (st.previousOrigin != e.origin || st.previousRotation != e.rotation);
     e.fixed = resting && !movedSinceLastCall;
+    // What changed under a sleeping body touching it wakes that body (SpaceWake.cpp). A sleeping body has
+    // not moved since it fell asleep (an edit wakes it; what moved it last was its last step), but its
+    // shape may have changed; a body the simulator moves touches nothing asleep (its island woke): only what
+    // rests without sleeping (fixed, kinematic, bodiless, a game's own), what is reshaped and what is taken
+    // away ask for the walk.
+    e.disturbed = st.previousBody != body || c.shapeVersion != version ||
+                  (movedSinceLastCall && !(root && root->sleeping));
+    const bool mover =
+        root && !root->sleeping && root->physicsType != PHYS_FixedInSpace && root->mass < INFINITE_MASS;
+    if (e.disturbed && st.hasPrevious && (!mover || st.previousBody != body)) m_restChanged = true;
     c.prevCurrent = prevIsPose;
     if (!same) {
         m_newShapes.clear();
@@ -372,6 +382,7 @@ void SimpleCollisionSpace::populateContactList(float delta) {
     m_notices.clear();
     const bool continuous = delta > 0.0f && std::isfinite(delta) && m_samplesPerSecond > 0;
     gatherEntries(continuous);
+    if (m_restChanged) wakeDisturbedSleepers();
     // Candidate pairs (planes first: when the contact budget fills, the ground is the last thing to lose).
     const Broadphase::PairList pairs = m_broadphase->findPairs(m_entries, m_relaid ? nullptr : &m_changed);
     m_pairs = pairs.first;
@@ -455,6 +466,7 @@ void SimpleCollisionSpace::gatherEntries(bool continuous) {
     m_relaid = m_layoutDirty;
     if (m_layoutDirty) layOutEntries();
     m_changed.clear();
+    m_restChanged = false;
     const int n = int(m_entries.size());
     for (int i = 0; i < n; ++i) {
         // The entries are walked in order, but each one's geometry, body and dynamics lie elsewhere: asked
@@ -474,6 +486,7 @@ void SimpleCollisionSpace::gatherEntries(bool continuous) {
         const bool was = e.active;
         const gcol::Aabb box = e.box;
         e.active = gatherEntry(e, continuous);
+        if (was && !e.active) m_restChanged = true; // its body gone, or its pose no longer finite
         if (e.active != was || (e.active && !e.plane && !sameBits(box, e.box))) m_changed.push_back(i);
     }
 }

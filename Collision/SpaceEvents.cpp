@@ -39,16 +39,9 @@ void dropRepeats(std::vector<SimpleCollisionSpace::Notice>& notices) {
 } // namespace
 
 void SimpleCollisionSpace::carryRestingPairs() {
-    auto entryOf = [this](CollisionGeometry* g) -> const Entry* {
-        const int i = g->spaceState().entry; // its entry, if it took part in this call
-        return i >= 0 && size_t(i) < m_entries.size() && m_entries[size_t(i)].g == g &&
-                       m_entries[size_t(i)].active
-                   ? &m_entries[size_t(i)]
-                   : nullptr;
-    };
     for (const Notice& n : m_touching) {
-        const Entry* a = entryOf(n.g1);
-        const Entry* b = entryOf(n.g2);
+        const Entry* a = activeEntryOf(n.g1);
+        const Entry* b = activeEntryOf(n.g2);
         // Tested this call (its own result stands), or gone, or rebound: not carried.
         if (!a || !b || a->body != n.b1 || b->body != n.b2 || !a->fixed || !b->fixed) continue;
         m_notices.push_back(n);
@@ -90,6 +83,9 @@ void SimpleCollisionSpace::deliverEvents() {
 
 void SimpleCollisionSpace::forgetEventsOfGone() {
     auto involves = [this](const Notice& n) { return isGone(n.g1) || isGone(n.g2); };
+    for (const Notice& n : m_touching) // what slept on removed geometry wakes (SpaceWake.cpp)
+        if (!n.sensor && isGone(n.g1) != isGone(n.g2))
+            wakeSleeper((isGone(n.g1) ? n.g2 : n.g1)->body(), nullptr);
     m_touching.erase(std::remove_if(m_touching.begin(), m_touching.end(), involves), m_touching.end());
     m_held.erase(std::remove_if(m_held.begin(), m_held.end(), involves), m_held.end());
     forgetContactPairsOfGone();

@@ -1,6 +1,7 @@
 // BodyMotion.cpp - the simulator body's iRigidBodyMotion: teleport, drive toward a pose, wake.
 #include "MathEigen.h"
 #include "PhysicsConstants.h"
+#include "PhysicsScene.h"
 #include "RigidBody.h"
 #include "iUtilities.h"
 
@@ -56,9 +57,17 @@ bool RigidBody::moveTo(const Vector& position, const Matrix& orientation, float 
     return true;
 }
 
+// An attached body sleeps with its attachment root (the root is what the islands put to sleep): it wakes
+// the root.
 void RigidBody::wake() {
     setAsleep(false);
     restTime = 0.0f;
+    const RBDynamics* root = getDynamics().attachmentRoot();
+    if (root == &getDynamics() || !m_scene) return;
+    if (RigidBody* r = m_scene->bodyOf(root)) {
+        r->setAsleep(false);
+        r->restTime = 0.0f;
+    }
 }
 
 } // namespace physics

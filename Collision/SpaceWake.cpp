@@ -1,0 +1,42 @@
+// SpaceWake.cpp - a sleeping body whose support changed wakes: what it touched when last tested moved, was
+// reshaped (iCPlane::setPlane, a new radius), was given another body, lost its body or left the space.
+//
+// A pair of two resting things is not tested (SimpleCollisionSpace::testPair), so nothing else would notice:
+// a crate asleep on a bridge the game deleted, on a platform it moved away or on a floor it lowered hung in
+// the air, since nothing touching it was moving. The rule is Box2D's (a contact that stops touching wakes
+// both bodies), applied where the space sees it: to the last call's touching pairs (m_touching), before this
+// call's pairs are tested, so that the woken body's pairs are tested in this call. The walk is made only in
+// a call where something that may hold a sleeping body changed (m_restChanged): a resting scene pays nothing.
+// Only the simulator's bodies sleep; they are woken through iRigidBodyMotion::wake.
+#include "RBDynamics.h"
+#include "SimpleCollisionSpace.h"
+#include "iRigidBody.h"
+#include "iRigidBodyMotion.h"
+
+SimpleCollisionSpace::Entry* SimpleCollisionSpace::activeEntryOf(const CollisionGeometry* g) {
+    const int i = g->spaceState().entry; // its entry, if it took part in this call
+    return i >= 0 && size_t(i) < m_entries.size() && m_entries[size_t(i)].g == g &&
+                   m_entries[size_t(i)].active
+               ? &m_entries[size_t(i)]
+               : nullptr;
+}
+
+// entry: the body's entry in this call, if gathered already (its pairs are then tested now, not skipped as
+// resting); nullptr when the wake comes before the entries are gathered (a removal settled).
+void SimpleCollisionSpace::wakeSleeper(iRigidBody* body, Entry* entry) {
+    if (!body || !body->getDynamics().attachmentRoot()->sleeping) return;
+    if (iRigidBodyMotion* motion = motionOf(body)) motion->wake();
+    if (entry) entry->fixed = false;
+}
+
+void SimpleCollisionSpace::wakeDisturbedSleepers() {
+    for (const Notice& n : m_touching) {
+        if (n.sensor) continue; // an overlap with a sensor holds nothing up
+        Entry* a = activeEntryOf(n.g1);
+        Entry* b = activeEntryOf(n.g2);
+        const bool aStays = a && a->body == n.b1, bStays = b && b->body == n.b2;
+        if (aStays && (!bStays || b->disturbed || a->disturbed))
+            wakeSleeper(a->body, a); // or reshaped itself
+        if (bStays && (!aStays || a->disturbed || b->disturbed)) wakeSleeper(b->body, b);
+    }
+}
