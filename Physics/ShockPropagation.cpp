@@ -62,6 +62,17 @@ void ContactSolver::orderByLevel() {
         if (la == lb || la == INT_MAX || lb == INT_MAX) continue;
         m_shock.push_back({k, lb > la}); // (manifold, whether b is the upper body)
     }
+    // Only under a heavy body (below): with no heavy pair at all, nothing is kept, and the sort is skipped.
+    const auto heavyPair = [this](const std::pair<size_t, bool>& shock) {
+        const Manifold& m = m_manifolds[shock.first];
+        const SolverBody &u = m_bodies[size_t(shock.second ? m.b : m.a)],
+                         &l = m_bodies[size_t(shock.second ? m.a : m.b)];
+        return movable(l) && u.invMass * kHeavyRatio < l.invMass;
+    };
+    if (std::none_of(m_shock.begin(), m_shock.end(), heavyPair)) {
+        m_shock.clear();
+        return;
+    }
     // By level, and in manifold order within a level (a stable order without stable_sort's buffer).
     std::sort(m_shock.begin(), m_shock.end(), [this](const auto& x, const auto& y) {
         const Manifold &mx = m_manifolds[x.first], &my = m_manifolds[y.first];
@@ -79,9 +90,7 @@ void ContactSolver::orderByLevel() {
     for (size_t j = m_shock.size(); j-- > 0;) { // from the top down
         const Manifold& m = m_manifolds[m_shock[j].first];
         const int upper = m_shock[j].second ? m.b : m.a, lower = m_shock[j].second ? m.a : m.b;
-        const SolverBody &u = m_bodies[size_t(upper)], &l = m_bodies[size_t(lower)];
-        const bool heavy = movable(l) && u.invMass * kHeavyRatio < l.invMass;
-        if (!heavy && !carries[size_t(upper)]) continue;
+        if (!heavyPair(m_shock[j]) && !carries[size_t(upper)]) continue;
         keep[j] = 1;
         carries[size_t(lower)] = 1;
     }
