@@ -87,6 +87,7 @@ void SimpleCollisionSpace::removeNow(CollisionGeometry* g) {
 }
 
 void SimpleCollisionSpace::settleRemovals() {
+    if (!m_notifying) settleDeadBodies();
     if (m_gone.empty() || m_notifying) return; // (nothing is removed while notifying: it is queued)
     std::sort(m_gone.begin(), m_gone.end());
     size_t kept = 0;

@@ -217,6 +217,7 @@ private:
     void deliverContactEvents();
     void forgetContactPairsOfGone();
     static void onBodyDestroyed(const iRigidBody* dying, void* self);
+    void settleDeadBodies(); // the pairs of bodies that died since the last call marked gone
     bool queryShapes(iCollisionGeometry* ig, std::vector<gcol::WorldShape>& out);
     // SpaceShapeCast.cpp
     struct CastGeometry {
@@ -327,9 +328,10 @@ private:
         int kind;     // 0 end (m_active), 1 begin, 2 persist (m_current)
         size_t index; // in that list
     };
-    std::vector<ContactEvent> m_contactEvents; // scratch
-    bool m_gathered = false;                   // m_current holds this delivery's pairs
-    bool m_deliveringContacts = false;         // m_active and m_current are being iterated
+    std::vector<ContactEvent> m_contactEvents;   // scratch
+    std::vector<const iRigidBody*> m_deadBodies; // died since the pairs were last walked (onBodyDestroyed)
+    bool m_gathered = false;                     // m_current holds this delivery's pairs
+    bool m_deliveringContacts = false;           // m_active and m_current are being iterated
     // Shape cast scratch.
     std::vector<CastGeometry> m_cast;
     std::vector<const CollisionGeometry*> m_movingOwner;   // the geometry of each m_moving shape

@@ -88,6 +88,7 @@ void SimpleCollisionSpace::gatherContactPairs(const std::vector<Notice>& notices
 }
 
 void SimpleCollisionSpace::deliverContactEvents() {
+    settleDeadBodies(); // a listener may have deleted a body since the last call began
     if (!m_gathered) return;
     m_gathered = false;
     // Match this delivery's pairs with the last one's (both sorted by sides).
@@ -169,17 +170,34 @@ void SimpleCollisionSpace::forgetContactPairsOfGone() {
         }
 }
 
+// A body's death names no pair at once (each death would walk every pair: quadratic when a scene with an
+// observer is torn down): its address is kept and the pairs are walked once, at the next call that reads
+// them (settleDeadBodies), before any new body could appear in a pair. While the pairs are being delivered
+// an observer may delete a body: the pairs are walked at once then, so no later call of that delivery is
+// handed the dead body.
 void SimpleCollisionSpace::onBodyDestroyed(const iRigidBody* dying, void* self) {
     auto* space = static_cast<SimpleCollisionSpace*>(self);
-    for (auto* list : {&space->m_active, &space->m_current})
+    if (space->m_active.empty() && space->m_current.empty()) return;
+    space->m_deadBodies.push_back(dying);
+    if (space->m_deliveringContacts) space->settleDeadBodies();
+}
+
+void SimpleCollisionSpace::settleDeadBodies() {
+    if (m_deadBodies.empty()) return;
+    std::sort(m_deadBodies.begin(), m_deadBodies.end());
+    auto dead = [this](const iRigidBody* b) {
+        return b && std::binary_search(m_deadBodies.begin(), m_deadBodies.end(), b);
+    };
+    for (auto* list : {&m_active, &m_current})
         for (ActivePair& p : *list) {
-            if (p.pair.bodyA == dying) {
+            if (dead(p.pair.bodyA)) {
                 p.pair.bodyA = nullptr;
                 p.gone = true;
             }
-            if (p.pair.bodyB == dying) {
+            if (dead(p.pair.bodyB)) {
                 p.pair.bodyB = nullptr;
                 p.gone = true;
             }
         }
+    m_deadBodies.clear();
 }

@@ -278,7 +278,7 @@ int main(int argc, char** argv) {
     const std::vector<Row> rows = {
         {"rain: 1,000 spheres", rainScene(1000), awake, pile, reps, Extra::None},
         {"box pile: 1,000 boxes", boxPileScene(1000), awake, pile, reps, Extra::None},
-        {"box pile: 4,000 boxes", boxPileScene(4000), awake, pile, 1, Extra::None},
+        {"box pile: 4,000 boxes", boxPileScene(4000), awake, pile, reps, Extra::None},
         {"pyramid 210 awake", pyramidScene(20), awake, pile, reps, Extra::TopDrift},
         {"pyramid 210 asleep", pyramidScene(20), asleep, pile, reps, Extra::TopDrift},
         {"heavy on light 1:1,000", heavyOnLightScene(1000), awake, quick ? 120 : 300, reps, Extra::Sink},

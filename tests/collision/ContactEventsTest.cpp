@@ -5,6 +5,7 @@
 #include "ErrorRecorder.h"
 #include "FilterDifferential.h"
 #include "iCollisionEvents.h"
+#include "iCollisionListener.h"
 #include "iOctreeCollisionSpace.h"
 #include "iSimpleCollisionSpace.h"
 
@@ -205,6 +206,83 @@ TEST(ContactEvents, DestroyedBodyEndsItsPair) {
     ASSERT_EQ(seq.kinds, "be");
     EXPECT_TRUE((seq.pairs[1].bodyA == nullptr) != (seq.pairs[1].bodyB == nullptr));
     EXPECT_TRUE(seq.pairs[1].bodyA == &a || seq.pairs[1].bodyB == &a);
+    ga->Delete();
+    gb->Delete();
+    space->Delete();
+}
+
+// A body deleted by a HitWall listener, in the call whose contact events follow the listeners: that
+// delivery never hands the observer the dead body (it ends the pair naming it nullptr, at the next call), and
+// a new body made at once in its place (perhaps at its address) begins a pair of its own.
+TEST(ContactEvents, BodyDeletedByAListenerIsNeverHandedToAnObserver) {
+    iCollisionSpace* space = CreateSimpleCollisionSpace(0);
+    DefaultSpace joins(space);
+    UserBody a;
+    auto* b = new UserBody(Vector(1.5f, 0, 0));
+    iCollisionGeometry* ga = CreateCSphere(&a, 1.0f);
+    iCollisionGeometry* gb = CreateCSphere(b, 1.0f);
+    Sequence seq;
+    contactEventsOf(space)->addObserver(&seq);
+    space->populateContactList(0); // begins
+    struct Deleter final : iCollisionListener {
+        UserBody** body;
+        void HitWall(iRigidBody*, Vector, Vector) override {
+            delete *body;
+            *body = nullptr;
+        }
+    } deleter;
+    deleter.body = &b;
+    const iRigidBody* dead = b;
+    const size_t before = seq.pairs.size();
+    a.attachListener(&deleter);
+    space->populateContactList(0); // the listener deletes b before this call's events are delivered
+    a.detachListener(&deleter);
+    ASSERT_EQ(b, nullptr);
+    for (size_t i = before; i < seq.pairs.size(); ++i) // handed after b died: never b
+        EXPECT_TRUE(seq.pairs[i].bodyA != dead && seq.pairs[i].bodyB != dead) << seq.kinds;
+    auto* c = new UserBody(Vector(1.5f, 0, 0)); // in b's place (the allocator may give it b's address)
+    gb->Delete();
+    gb = CreateCSphere(c, 1.0f);
+    space->populateContactList(0);
+    ASSERT_GE(seq.kinds.size(), 3u);
+    EXPECT_EQ(seq.kinds.substr(seq.kinds.size() - 2), "eb") << seq.kinds; // b's pair ends, c's begins
+    const ContactPair& end = seq.pairs[seq.pairs.size() - 2];
+    EXPECT_TRUE((end.bodyA == nullptr) != (end.bodyB == nullptr));
+    const ContactPair& begin = seq.pairs.back();
+    EXPECT_TRUE(begin.bodyA == c || begin.bodyB == c);
+    contactEventsOf(space)->removeObserver(&seq);
+    ga->Delete();
+    gb->Delete();
+    delete c;
+    space->Delete();
+}
+
+// An observer that deletes a body during a delivery: the calls after it in that delivery do not name it.
+TEST(ContactEvents, BodyDeletedByAnObserverIsNotNamedLaterInThatDelivery) {
+    iCollisionSpace* space = CreateSimpleCollisionSpace(0);
+    DefaultSpace joins(space);
+    UserBody a;
+    auto* b = new UserBody(Vector(1.5f, 0, 0));
+    iCollisionGeometry* ga = CreateCSphere(&a, 1.0f);
+    iCollisionGeometry* gb = CreateCSphere(b, 1.0f);
+    struct DeletesB final : ContactObserver {
+        UserBody** body;
+        void onBegin(const ContactPair&) override {
+            delete *body;
+            *body = nullptr;
+        }
+    } deleter;
+    deleter.body = &b;
+    const iRigidBody* dead = b;
+    Sequence after; // attached after the deleter: hears the same begin, after b died
+    contactEventsOf(space)->addObserver(&deleter);
+    contactEventsOf(space)->addObserver(&after);
+    space->populateContactList(0);
+    ASSERT_EQ(b, nullptr);
+    ASSERT_EQ(after.kinds, "b");
+    EXPECT_TRUE(after.pairs[0].bodyA != dead && after.pairs[0].bodyB != dead);
+    contactEventsOf(space)->removeObserver(&deleter);
+    contactEventsOf(space)->removeObserver(&after);
     ga->Delete();
     gb->Delete();
     space->Delete();
