@@ -13,7 +13,9 @@
 
 class iPhysicsSceneSettings {
 public:
-    virtual bool setGravity(const Vector& g) = 0; // default (0, -9.81, 0); GF_PHYS_GRAVITY
+    // Default (0, -9.81, 0); GF_PHYS_GRAVITY. A change wakes every sleeping body: asleep under the old
+    // gravity, it would hang where it lay.
+    virtual bool setGravity(const Vector& g) = 0;
     virtual Vector getGravity() const = 0;
     // Fixed steps per second, 1..10000 (default 60; GF_PHYS_STEP_RATE).
     virtual bool setStepRate(int hz) = 0;

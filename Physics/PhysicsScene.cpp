@@ -100,6 +100,7 @@ bool PhysicsScene::setGravity(const Vector& g) {
         error(L"PhysicsScene::setGravity: non-finite gravity refused");
         return false;
     }
+    if (g != m_gravity) wakeAll(); // asleep under the old gravity, a body would hang where it lay
     m_gravity = g;
     SolverSettings s = m_solver.settings();
     s.gravity = g.length(); // what a resting contact carries (SolverSettings::restingOverlap)

@@ -113,6 +113,7 @@ public:
 private:
     ~PhysicsScene();
     void step(float dt);
+    void wakeAll(); // every sleeping body wakes (sleeping switched off, gravity changed)
     void runFixedUpdaters(float dt);
     // The space's contacts at the current poses (none when it was replaced since spaceVersion).
     void findContacts(float dt, unsigned spaceVersion, const CollisionContact*& contacts, size_t& count);

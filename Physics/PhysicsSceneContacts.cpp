@@ -72,11 +72,14 @@ bool PhysicsScene::setRestitutionRule(CombineRule r) {
 
 void PhysicsScene::setSleepingEnabled(bool on) {
     m_sleeping = on;
-    if (!on)
-        for (RigidBody* b : bodies()) {
-            b->setAsleep(false);
-            b->restTime = 0;
-        }
+    if (!on) wakeAll();
+}
+
+void PhysicsScene::wakeAll() {
+    for (RigidBody* b : bodies()) {
+        b->setAsleep(false);
+        b->restTime = 0;
+    }
 }
 
 size_t PhysicsScene::getAwakeBodyCount() const {

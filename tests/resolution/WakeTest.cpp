@@ -65,3 +65,26 @@ TEST(Wake, APyramidWokenByATouchGainsNoEnergy) {
     EXPECT_LT(worstEnergy, brought + 0.01f);
     EXPECT_LT(worstOverlap, p.restingOverlap + 0.5f / 60.0f + 0.0005f);
 }
+
+// Gravity turned upward: a box asleep on the floor wakes and falls up at g (y = y0 + g t^2 / 2, within the
+// integrator's g t dt / 2). Asleep under the old gravity it hung on the floor. Setting the same gravity again
+// wakes nothing.
+TEST(Wake, GravityChangedWakesWhatSleptUnderTheOld) {
+    SceneFixture s(4);
+    s.world->ground();
+    iPhysicsFrame* box = s.world->box(Vector(0, 0.5f, 0), Vector(0.5f, 0.5f, 0.5f), 1.0f);
+    for (int i = 0; i < 180 && !box->getDynamics()->sleeping; ++i) s.steps(1);
+    ASSERT_TRUE(box->getDynamics()->sleeping);
+    iPhysicsSceneSettings* settings = settingsOf(s.scene);
+    settings->setGravity(settings->getGravity());
+    s.steps(1);
+    EXPECT_TRUE(box->getDynamics()->sleeping) << "the same gravity again changes nothing";
+    const float y0 = box->getDynamics()->position.y;
+    settings->setGravity(Vector(0, resolution_test::kG, 0));
+    const int n = 30;
+    s.steps(n);
+    const float t = n * resolution_test::kDt;
+    EXPECT_FALSE(box->getDynamics()->sleeping);
+    EXPECT_NEAR(box->getDynamics()->position.y, y0 + 0.5f * resolution_test::kG * t * t,
+                0.5f * resolution_test::kG * t * resolution_test::kDt + 1e-3f);
+}
