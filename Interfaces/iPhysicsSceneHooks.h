@@ -15,7 +15,9 @@ public:
     // Game code run at the start of every step (iFixedUpdater.h). nullptr or a repeat is refused (false).
     virtual bool addFixedUpdater(iFixedUpdater* u) = 0;
     virtual void removeFixedUpdater(const iFixedUpdater* u) = 0;
-    // A state-dependent force on body, evaluated at every integrator stage (iForceGenerator.h).
+    // A state-dependent force on body, evaluated at every integrator stage (iForceGenerator.h). Adding or
+    // removing one wakes the body; a sleeping body's generators are not evaluated (a force that changes over
+    // time: wake the body, or iRigidBodySwitches::setSleepAllowed(false)).
     virtual bool addForceGenerator(iRigidBody* body, iForceGenerator* g) = 0;
     virtual void removeForceGenerator(const iRigidBody* body, const iForceGenerator* g) = 0;
 

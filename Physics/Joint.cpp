@@ -36,8 +36,11 @@ Joint::~Joint() {
     leaveJointList(m_b, this);
 }
 
+// A body the joint held wakes when the joint lets go of it or goes: asleep hanging from it, it would hang in
+// the air.
 void Joint::letGo(const RigidBody* body) {
     if (body != m_a && body != m_b) return;
+    if (RigidBody* other = body == m_a ? m_b : m_a) other->wake();
     RigidBody*& held = body == m_a ? m_a : m_b;
     leaveJointList(held, this);
     held = nullptr;
@@ -46,6 +49,8 @@ void Joint::letGo(const RigidBody* body) {
 
 void Joint::destroy() {
     if (m_deleted) return;
+    for (RigidBody* held : {m_a, m_b})
+        if (held) held->wake();
     if (!PhysicsScene::updating()) {
         delete this;
         return;

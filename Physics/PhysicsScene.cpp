@@ -162,13 +162,16 @@ bool PhysicsScene::addForceGenerator(iRigidBody* body, iForceGenerator* g) {
     }
     auto& gens = b->generators();
     if (std::find(gens.begin(), gens.end(), g) == gens.end()) gens.push_back(g);
+    b->wake(); // a sleeping body's generators are not evaluated: asleep, it would never feel this one
     return true;
 }
 
 void PhysicsScene::removeForceGenerator(const iRigidBody* body, const iForceGenerator* g) {
     if (RigidBody* b = sceneBody(body)) {
         auto& gens = b->generators();
+        const size_t before = gens.size();
         gens.erase(std::remove(gens.begin(), gens.end(), g), gens.end());
+        if (gens.size() != before) b->wake(); // what it held up (or down) has to be found again
     }
 }
 

@@ -3,12 +3,16 @@
 // the pyramid collapsed in a wave: 84 J of kinetic energy from nothing, 6.6 cm of overlap.
 #include "SceneFixture.h"
 #include "Scenes.h"
+#include "iBallJoint.h"
+#include "iForceGenerator.h"
+#include "iPhysicsSceneHooks.h"
 #include "iPhysicsSceneStats.h"
 #include "iRigidBodyMotion.h"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 
 using resolution_test::SceneFixture;
 
@@ -87,4 +91,81 @@ TEST(Wake, GravityChangedWakesWhatSleptUnderTheOld) {
     EXPECT_FALSE(box->getDynamics()->sleeping);
     EXPECT_NEAR(box->getDynamics()->position.y, y0 + 0.5f * resolution_test::kG * t * t,
                 0.5f * resolution_test::kG * t * resolution_test::kDt + 1e-3f);
+}
+
+namespace {
+
+bool sleepsWithin(SceneFixture& s, iPhysicsFrame* f, float seconds) {
+    for (int i = 0; i < int(seconds * 60) && !f->getDynamics()->sleeping; ++i) s.steps(1);
+    return f->getDynamics()->sleeping;
+}
+
+// Where a body starting at rest at y0 is after n steps under a constant vertical acceleration a, and how far
+// semi-implicit Euler may be from it (|a| t dt / 2).
+void expectUniformAcceleration(const iPhysicsFrame* f, float y0, float a, int n) {
+    const float t = float(n) * resolution_test::kDt;
+    EXPECT_NEAR(f->getDynamics()->position.y, y0 + 0.5f * a * t * t,
+                0.5f * std::fabs(a) * t * resolution_test::kDt + 1e-3f);
+}
+
+struct ConstantForce final : iForceGenerator {
+    Vector force;
+    void addForces(const iRigidBody*, const RigidBodyState&, Vector& f, Vector&) override { f += force; }
+};
+
+} // namespace
+
+// A box asleep hanging from a joint: the joint deleted, or let go because the body it hung from was deleted,
+// the box wakes and falls at g. Asleep, it hung in the air.
+TEST(Wake, AJointGoingDropsWhatSleptHangingFromIt) {
+    for (int how = 0; how < 2; ++how) {
+        SceneFixture s(4);
+        iPhysicsFrame* hook = CreatePhysicsFrame(); // not the world's: deleted here
+        hook->getDynamics()->physicsType = PHYS_FixedInSpace;
+        hook->getDynamics()->position = Vector(0, 6, 0);
+        iPhysicsFrame* box = s.world->box(Vector(0, 5, 0), Vector(0.5f, 0.5f, 0.5f), 1.0f);
+        iBallJoint* joint = CreateBallJoint(box->getRB(), hook->getRB(), Vector(0, 5.5f, 0));
+        ASSERT_NE(joint, nullptr);
+        ASSERT_TRUE(sleepsWithin(s, box, 5.0f)) << how;
+        const float y0 = box->getDynamics()->position.y;
+        if (how == 0)
+            joint->Delete();
+        else
+            hook->Delete(); // the joint lets go of the box
+        const int n = 30;
+        s.steps(n);
+        EXPECT_FALSE(box->getDynamics()->sleeping) << how;
+        expectUniformAcceleration(box, y0, -resolution_test::kG, n);
+        if (how == 0)
+            hook->Delete();
+        else
+            joint->Delete();
+    }
+}
+
+// A force generator added to a sleeping body acts on it (30 N up on 1 kg asleep on the floor: it rises at
+// 30 - g m/s^2); removed from a body it held floating asleep, the body falls at g. A sleeping body's
+// generators are not evaluated: asleep, it never felt the one added.
+TEST(Wake, AddingOrRemovingAForceGeneratorWakesItsBody) {
+    SceneFixture s(4);
+    s.world->ground();
+    iPhysicsFrame* box = s.world->box(Vector(0, 0.5f, 0), Vector(0.5f, 0.5f, 0.5f), 1.0f);
+    ASSERT_TRUE(sleepsWithin(s, box, 3.0f));
+    ConstantForce lift;
+    lift.force = Vector(0, 30, 0);
+    ASSERT_TRUE(hooksOf(s.scene)->addForceGenerator(box->getRB(), &lift));
+    float y0 = box->getDynamics()->position.y;
+    s.steps(30);
+    expectUniformAcceleration(box, y0, 30.0f - resolution_test::kG, 30);
+    hooksOf(s.scene)->removeForceGenerator(box->getRB(), &lift);
+
+    iPhysicsFrame* floating = s.world->box(Vector(10, 5, 0), Vector(0.5f, 0.5f, 0.5f), 1.0f);
+    ConstantForce hold; // exactly its weight
+    hold.force = Vector(0, resolution_test::kG, 0);
+    ASSERT_TRUE(hooksOf(s.scene)->addForceGenerator(floating->getRB(), &hold));
+    ASSERT_TRUE(sleepsWithin(s, floating, 3.0f));
+    y0 = floating->getDynamics()->position.y;
+    hooksOf(s.scene)->removeForceGenerator(floating->getRB(), &hold);
+    s.steps(30);
+    expectUniformAcceleration(floating, y0, -resolution_test::kG, 30);
 }
