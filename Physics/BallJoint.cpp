@@ -41,6 +41,7 @@ public:
             return false;
         }
         m_cone = std::min(Real(angle), kBallPi);
+        wakeBodies();
         return true;
     }
     float getConeLimit() const override { return float(m_cone); }
@@ -51,6 +52,7 @@ public:
         }
         m_twistLower = lower;
         m_twistUpper = upper;
+        wakeBodies();
         return true;
     }
     float getSwingAngle() const override {

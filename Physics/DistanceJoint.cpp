@@ -30,6 +30,7 @@ public:
         }
         m_min = minLength;
         m_max = maxLength;
+        wakeBodies();
         return true;
     }
     float getMinLength() const override { return float(m_min); }

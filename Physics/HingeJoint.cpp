@@ -40,9 +40,13 @@ public:
         m_lower = lower;
         m_upper = upper;
         m_limitsOn = true;
+        wakeBodies();
         return true;
     }
-    void setLimitsEnabled(bool on) override { m_limitsOn = on; }
+    void setLimitsEnabled(bool on) override {
+        m_limitsOn = on;
+        wakeBodies();
+    }
     bool setMotor(float speed, float maxTorque) override {
         if (!std::isfinite(speed) || !(maxTorque >= 0) || !std::isfinite(maxTorque)) {
             error(L"iHingeJoint::setMotor: needs a finite speed and a finite torque >= 0; refused");
@@ -50,6 +54,7 @@ public:
         }
         m_speed = speed;
         m_maxTorque = maxTorque;
+        wakeBodies();
         return true;
     }
     float getAngle() const override {

@@ -47,10 +47,16 @@ void Joint::letGo(const RigidBody* body) {
     m_letGo = true;
 }
 
-void Joint::destroy() {
-    if (m_deleted) return;
+// What a joint does changed (a setter): its bodies wake, or asleep they would never feel it (a motor turned
+// on, a spring shortened, a limit moved).
+void Joint::wakeBodies() {
     for (RigidBody* held : {m_a, m_b})
         if (held) held->wake();
+}
+
+void Joint::destroy() {
+    if (m_deleted) return;
+    wakeBodies();
     if (!PhysicsScene::updating()) {
         delete this;
         return;
@@ -78,6 +84,7 @@ bool Joint::setBreakForce(float newtons) {
         return false;
     }
     m_breakForce = newtons;
+    wakeBodies(); // a sleeping load may break it now
     return true;
 }
 
@@ -87,6 +94,7 @@ bool Joint::setBreakTorque(float newtonMetres) {
         return false;
     }
     m_breakTorque = newtonMetres;
+    wakeBodies();
     return true;
 }
 

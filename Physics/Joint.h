@@ -40,6 +40,7 @@ public:
     // Delete(): now, or at the end of the current scene update (the step may still hold it).
     void destroy();
     static void deleteDeferred(); // the scene's update ended
+    void wakeBodies();            // its setters and its going wake both bodies
 
     // --- the solver's side ---
     int slotA = -1, slotB = -1; // the two bodies among the solver's (the world's slot for none)
@@ -122,7 +123,10 @@ public:
     Vector getLocalAnchorA() const override { return localAnchorA(); }
     Vector getLocalAnchorB() const override { return localAnchorB(); }
     bool isActive() const override { return acting(); }
-    void setCollideConnected(bool collide) override { collideConnected = collide; }
+    void setCollideConnected(bool collide) override {
+        collideConnected = collide;
+        wakeBodies();
+    }
     bool getCollideConnected() const override { return collideConnected; }
     bool setBreakForce(float newtons) override { return Joint::setBreakForce(newtons); }
     bool setBreakTorque(float newtonMetres) override { return Joint::setBreakTorque(newtonMetres); }

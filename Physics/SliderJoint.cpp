@@ -40,9 +40,13 @@ public:
         m_lower = lower;
         m_upper = upper;
         m_limitsOn = true;
+        wakeBodies();
         return true;
     }
-    void setLimitsEnabled(bool on) override { m_limitsOn = on; }
+    void setLimitsEnabled(bool on) override {
+        m_limitsOn = on;
+        wakeBodies();
+    }
     bool setMotor(float speed, float maxForce) override {
         if (!std::isfinite(speed) || !(maxForce >= 0) || !std::isfinite(maxForce)) {
             error(L"iSliderJoint::setMotor: needs a finite speed and a finite force >= 0; refused");
@@ -50,6 +54,7 @@ public:
         }
         m_speed = speed;
         m_maxForce = maxForce;
+        wakeBodies();
         return true;
     }
     float getPosition() const override {

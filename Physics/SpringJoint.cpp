@@ -41,6 +41,7 @@ public:
         if (!(length >= 0) || !std::isfinite(length))
             return refuse(L"iSpring::setRestLength: needs a finite length >= 0");
         m_rest = length;
+        wakeBodies();
         return true;
     }
     float getRestLength() const override { return float(m_rest); }
@@ -48,12 +49,14 @@ public:
         if (!(k >= 0) || !std::isfinite(k)) return refuse(L"iSpring::setStiffness: needs a finite k >= 0");
         m_k = k;
         m_byFrequency = false;
+        wakeBodies();
         return true;
     }
     bool setDamping(float c) override {
         if (!(c >= 0) || !std::isfinite(c)) return refuse(L"iSpring::setDamping: needs a finite c >= 0");
         m_c = c;
         m_byFrequency = false;
+        wakeBodies();
         return true;
     }
     float getStiffness() const override { return float(m_k); }
@@ -64,11 +67,13 @@ public:
         m_hertz = hertz;
         m_ratio = dampingRatio;
         m_byFrequency = true;
+        wakeBodies();
         return true;
     }
     bool setMaxForce(float newtons) override {
         if (!(newtons > 0)) return refuse(L"iSpring::setMaxForce: needs a force > 0 (infinite: no limit)");
         m_maxForce = newtons;
+        wakeBodies();
         return true;
     }
     float getLength() const override { return float(anchorDistance()); }

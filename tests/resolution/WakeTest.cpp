@@ -5,9 +5,11 @@
 #include "Scenes.h"
 #include "iBallJoint.h"
 #include "iForceGenerator.h"
+#include "iHingeJoint.h"
 #include "iPhysicsSceneHooks.h"
 #include "iPhysicsSceneStats.h"
 #include "iRigidBodyMotion.h"
+#include "iSpring.h"
 
 #include <gtest/gtest.h>
 
@@ -168,4 +170,29 @@ TEST(Wake, AddingOrRemovingAForceGeneratorWakesItsBody) {
     hooksOf(s.scene)->removeForceGenerator(floating->getRB(), &hold);
     s.steps(30);
     expectUniformAcceleration(floating, y0, -resolution_test::kG, 30);
+}
+
+// A joint's setters wake its bodies: a motor turned on at a sleeping hinge drives it at the motor's speed; a
+// spring shortened by 0.5 m under a sleeping box lifts it 0.5 m (k = 100 N/m, critically damped, 1 kg).
+// Asleep, neither felt the change.
+TEST(Wake, AJointsSettersWakeItsBodies) {
+    SceneFixture s(4);
+    iPhysicsFrame* wheel = s.world->box(Vector(0, 3, 0), Vector(0.5f, 0.5f, 0.1f), 1.0f);
+    iHingeJoint* hinge = CreateHingeJoint(wheel->getRB(), nullptr, Vector(0, 3, 0), Vector(0, 0, 1));
+    iPhysicsFrame* box = s.world->box(Vector(5, 3, 0), Vector(0.5f, 0.5f, 0.5f), 1.0f);
+    const float k = 100.0f, stretch = resolution_test::kG / k;
+    iSpring* spring =
+        CreateSpring(box->getRB(), nullptr, Vector(5, 3.5f, 0), Vector(5, 5, 0), 1.5f - stretch, k, 20.0f);
+    ASSERT_NE(hinge, nullptr);
+    ASSERT_NE(spring, nullptr);
+    ASSERT_TRUE(sleepsWithin(s, wheel, 3.0f));
+    ASSERT_TRUE(sleepsWithin(s, box, 3.0f));
+    const float boxY = box->getDynamics()->position.y;
+    ASSERT_TRUE(hinge->setMotor(2.0f, 100.0f));
+    ASSERT_TRUE(spring->setRestLength(1.5f - stretch - 0.5f));
+    s.seconds(3.0f);
+    EXPECT_NEAR(std::fabs(wheel->getDynamics()->angularVelocity.z), 2.0f, 0.02f);
+    EXPECT_NEAR(box->getDynamics()->position.y, boxY + 0.5f, 0.01f);
+    hinge->Delete();
+    spring->Delete();
 }
