@@ -75,6 +75,7 @@ void SimpleCollisionSpace::remove(iCollisionGeometry* o) {
 }
 
 void SimpleCollisionSpace::removeNow(CollisionGeometry* g) {
+    wakeSleeper(g->body(), nullptr); // asleep, a body that lost its shape would hang where it rested
     ++m_membership;
     m_layoutDirty = true;
     CollisionGeometry::SpaceState& st = g->spaceState();

@@ -160,3 +160,23 @@ TEST(SupportChange, ASleepingBallShrunkWithSetRadiusWakesAndSettlesAtItsNewRadiu
     s.seconds(2.0f);
     EXPECT_NEAR(ball->getDynamics()->position.y, 0.5f, 0.01f);
 }
+
+// A box asleep on the floor whose own shape is removed from the space falls through the floor at g: nothing
+// holds it up any more.
+TEST(SupportChange, ASleeperWhoseOwnShapeLeavesTheSpaceFalls) {
+    SceneFixture s(4);
+    s.world->ground();
+    iPhysicsFrame* box = clayBox(*s.world, Vector(0, 0.5f, 0));
+    iCollisionGeometry* shape = nullptr;
+    for (iCollisionGeometry* g : s.world->space()->getAttachedGeometry())
+        if (g->getRigidBody() == box->getRB()) shape = g;
+    ASSERT_NE(shape, nullptr);
+    ASSERT_TRUE(sleepsWithin(s, box, 3.0f));
+    const float y0 = box->getDynamics()->position.y;
+    s.world->space()->remove(shape);
+    const int n = 30;
+    s.steps(n);
+    const float t = float(n) * kDt;
+    EXPECT_NEAR(box->getDynamics()->position.y, y0 - 0.5f * kG * t * t, 0.5f * kG * t * kDt + 0.005f);
+    s.world->space()->add(shape); // the world deletes it with its space
+}
