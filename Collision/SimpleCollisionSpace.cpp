@@ -235,6 +235,8 @@ bool SimpleCollisionSpace::gatherEntry(Entry& e, bool continuous) {
     CollisionGeometry::SpaceState& st = g->spaceState();
     Entry::Cache& c = e.cache;
     iRigidBody* body = g->body();
+    // A new filter may let something asleep on it through (disturbed, below).
+    const bool refiltered = e.layer != g->getLayer() || e.mask != g->getMask() || e.sensor != g->isSensor();
     e.layer = g->getLayer();
     e.mask = g->getMask();
     e.sensor = g->isSensor();
@@ -286,7 +288,7 @@ bool SimpleCollisionSpace::gatherEntry(Entry& e, bool continuous) {
     // shape may have changed; a body the simulator moves touches nothing asleep (its island woke): only what
     // rests without sleeping (fixed, kinematic, bodiless, a game's own), what is reshaped and what is taken
     // away ask for the walk.
-    e.disturbed = st.previousBody != body || c.shapeVersion != version ||
+    e.disturbed = st.previousBody != body || c.shapeVersion != version || refiltered ||
                   (movedSinceLastCall && !(root && root->sleeping));
     const bool mover =
         root && !root->sleeping && root->physicsType != PHYS_FixedInSpace && root->mass < INFINITE_MASS;

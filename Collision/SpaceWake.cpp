@@ -1,5 +1,6 @@
 // SpaceWake.cpp - a sleeping body whose support changed wakes: what it touched when last tested moved, was
-// reshaped (iCPlane::setPlane, a new radius), was given another body, lost its body or left the space; and
+// reshaped (iCPlane::setPlane, a new radius), was given another body or a new filter (iCollisionFilter.h),
+// lost its body or left the space; and
 // a sleeping body whose own geometry leaves the space (removeNow).
 //
 // A pair of two resting things is not tested (SimpleCollisionSpace::testPair), so nothing else would notice:

@@ -7,6 +7,7 @@
 #include "iCOBB.h"
 #include "iCPlane.h"
 #include "iCSphere.h"
+#include "iCollisionFilter.h"
 #include "iCollisionQueries.h"
 #include "iOctreeCollisionSpace.h"
 
@@ -179,4 +180,17 @@ TEST(SupportChange, ASleeperWhoseOwnShapeLeavesTheSpaceFalls) {
     const float t = float(n) * kDt;
     EXPECT_NEAR(box->getDynamics()->position.y, y0 - 0.5f * kG * t * t, 0.5f * kG * t * kDt + 0.005f);
     s.world->space()->add(shape); // the world deletes it with its space
+}
+
+// A platform made to let the box's layer through (its mask changed) drops the box asleep on it.
+TEST(SupportChange, APlatformFilteredToLetTheBoxThroughDropsIt) {
+    SceneFixture s(4);
+    s.world->ground(-3.0f);
+    iPhysicsFrame* platform = s.world->fixedBox(Vector(0, -0.1f, 0), Vector(2, 0.1f, 2));
+    iPhysicsFrame* box = clayBox(*s.world, Vector(0, 0.5f, 0));
+    iCollisionGeometry* deck = nullptr;
+    for (iCollisionGeometry* g : s.world->space()->getAttachedGeometry())
+        if (g->getRigidBody() == platform->getRB()) deck = g;
+    ASSERT_NE(deck, nullptr);
+    fallsToTheFloor(s, box, -3.0f, [&] { filterOf(deck)->setMask(~std::uint32_t(1)); }); // not layer 1
 }
