@@ -46,6 +46,23 @@ struct TwoBalls {
     }
     void at(float x) { b.getDynamics().position = Vector(x, 0, 0); }
 };
+
+// The same two touching spheres, the second one's body on the heap: a test deletes it (and sets b to
+// nullptr).
+struct BallAndMortalBall {
+    iCollisionSpace* space = CreateSimpleCollisionSpace(0);
+    DefaultSpace joins{space};
+    UserBody a;
+    UserBody* b = new UserBody(Vector(1.5f, 0, 0));
+    iCollisionGeometry* ga = CreateCSphere(&a, 1.0f);
+    iCollisionGeometry* gb = CreateCSphere(b, 1.0f);
+    ~BallAndMortalBall() {
+        ga->Delete();
+        gb->Delete();
+        delete b;
+        space->Delete();
+    }
+};
 } // namespace
 
 TEST(ContactEvents, FiltersAndSensorsAgainstBruteForceSimple) {
@@ -192,38 +209,27 @@ TEST(ContactEvents, ObserversMayDeleteThemselvesAndGeometry) {
 
 // A body destroyed while touching: its pair ends with that body named nullptr.
 TEST(ContactEvents, DestroyedBodyEndsItsPair) {
-    iCollisionSpace* space = CreateSimpleCollisionSpace(0);
-    DefaultSpace joins(space);
-    UserBody a;
-    auto* b = new UserBody(Vector(1.5f, 0, 0));
-    iCollisionGeometry* ga = CreateCSphere(&a, 1.0f);
-    iCollisionGeometry* gb = CreateCSphere(b, 1.0f);
+    BallAndMortalBall t;
     Sequence seq;
-    contactEventsOf(space)->addObserver(&seq);
-    space->populateContactList(0);
-    delete b;
-    space->populateContactList(0);
+    contactEventsOf(t.space)->addObserver(&seq);
+    t.space->populateContactList(0);
+    delete t.b;
+    t.b = nullptr;
+    t.space->populateContactList(0);
     ASSERT_EQ(seq.kinds, "be");
     EXPECT_TRUE((seq.pairs[1].bodyA == nullptr) != (seq.pairs[1].bodyB == nullptr));
-    EXPECT_TRUE(seq.pairs[1].bodyA == &a || seq.pairs[1].bodyB == &a);
-    ga->Delete();
-    gb->Delete();
-    space->Delete();
+    EXPECT_TRUE(seq.pairs[1].bodyA == &t.a || seq.pairs[1].bodyB == &t.a);
+    contactEventsOf(t.space)->removeObserver(&seq);
 }
 
 // A body deleted by a HitWall listener, in the call whose contact events follow the listeners: that
 // delivery never hands the observer the dead body (it ends the pair naming it nullptr, at the next call), and
 // a new body made at once in its place (perhaps at its address) begins a pair of its own.
 TEST(ContactEvents, BodyDeletedByAListenerIsNeverHandedToAnObserver) {
-    iCollisionSpace* space = CreateSimpleCollisionSpace(0);
-    DefaultSpace joins(space);
-    UserBody a;
-    auto* b = new UserBody(Vector(1.5f, 0, 0));
-    iCollisionGeometry* ga = CreateCSphere(&a, 1.0f);
-    iCollisionGeometry* gb = CreateCSphere(b, 1.0f);
+    BallAndMortalBall t;
     Sequence seq;
-    contactEventsOf(space)->addObserver(&seq);
-    space->populateContactList(0); // begins
+    contactEventsOf(t.space)->addObserver(&seq);
+    t.space->populateContactList(0); // begins
     struct Deleter final : iCollisionListener {
         UserBody** body;
         void HitWall(iRigidBody*, Vector, Vector) override {
@@ -231,40 +237,32 @@ TEST(ContactEvents, BodyDeletedByAListenerIsNeverHandedToAnObserver) {
             *body = nullptr;
         }
     } deleter;
-    deleter.body = &b;
-    const iRigidBody* dead = b;
+    deleter.body = &t.b;
+    const iRigidBody* dead = t.b;
     const size_t before = seq.pairs.size();
-    a.attachListener(&deleter);
-    space->populateContactList(0); // the listener deletes b before this call's events are delivered
-    a.detachListener(&deleter);
-    ASSERT_EQ(b, nullptr);
+    t.a.attachListener(&deleter);
+    t.space->populateContactList(0); // the listener deletes b before this call's events are delivered
+    t.a.detachListener(&deleter);
+    ASSERT_EQ(t.b, nullptr);
     for (size_t i = before; i < seq.pairs.size(); ++i) // handed after b died: never b
         EXPECT_TRUE(seq.pairs[i].bodyA != dead && seq.pairs[i].bodyB != dead) << seq.kinds;
-    auto* c = new UserBody(Vector(1.5f, 0, 0)); // in b's place (the allocator may give it b's address)
-    gb->Delete();
-    gb = CreateCSphere(c, 1.0f);
-    space->populateContactList(0);
+    t.b = new UserBody(Vector(1.5f, 0, 0)); // in b's place (the allocator may give it b's address)
+    t.gb->Delete();
+    t.gb = CreateCSphere(t.b, 1.0f);
+    t.space->populateContactList(0);
     ASSERT_GE(seq.kinds.size(), 3u);
-    EXPECT_EQ(seq.kinds.substr(seq.kinds.size() - 2), "eb") << seq.kinds; // b's pair ends, c's begins
+    EXPECT_EQ(seq.kinds.substr(seq.kinds.size() - 2), "eb")
+        << seq.kinds; // b's pair ends, the new one's begins
     const ContactPair& end = seq.pairs[seq.pairs.size() - 2];
     EXPECT_TRUE((end.bodyA == nullptr) != (end.bodyB == nullptr));
     const ContactPair& begin = seq.pairs.back();
-    EXPECT_TRUE(begin.bodyA == c || begin.bodyB == c);
-    contactEventsOf(space)->removeObserver(&seq);
-    ga->Delete();
-    gb->Delete();
-    delete c;
-    space->Delete();
+    EXPECT_TRUE(begin.bodyA == t.b || begin.bodyB == t.b);
+    contactEventsOf(t.space)->removeObserver(&seq);
 }
 
 // An observer that deletes a body during a delivery: the calls after it in that delivery do not name it.
 TEST(ContactEvents, BodyDeletedByAnObserverIsNotNamedLaterInThatDelivery) {
-    iCollisionSpace* space = CreateSimpleCollisionSpace(0);
-    DefaultSpace joins(space);
-    UserBody a;
-    auto* b = new UserBody(Vector(1.5f, 0, 0));
-    iCollisionGeometry* ga = CreateCSphere(&a, 1.0f);
-    iCollisionGeometry* gb = CreateCSphere(b, 1.0f);
+    BallAndMortalBall t;
     struct DeletesB final : ContactObserver {
         UserBody** body;
         void onBegin(const ContactPair&) override {
@@ -272,20 +270,17 @@ TEST(ContactEvents, BodyDeletedByAnObserverIsNotNamedLaterInThatDelivery) {
             *body = nullptr;
         }
     } deleter;
-    deleter.body = &b;
-    const iRigidBody* dead = b;
+    deleter.body = &t.b;
+    const iRigidBody* dead = t.b;
     Sequence after; // attached after the deleter: hears the same begin, after b died
-    contactEventsOf(space)->addObserver(&deleter);
-    contactEventsOf(space)->addObserver(&after);
-    space->populateContactList(0);
-    ASSERT_EQ(b, nullptr);
+    contactEventsOf(t.space)->addObserver(&deleter);
+    contactEventsOf(t.space)->addObserver(&after);
+    t.space->populateContactList(0);
+    ASSERT_EQ(t.b, nullptr);
     ASSERT_EQ(after.kinds, "b");
     EXPECT_TRUE(after.pairs[0].bodyA != dead && after.pairs[0].bodyB != dead);
-    contactEventsOf(space)->removeObserver(&deleter);
-    contactEventsOf(space)->removeObserver(&after);
-    ga->Delete();
-    gb->Delete();
-    space->Delete();
+    contactEventsOf(t.space)->removeObserver(&deleter);
+    contactEventsOf(t.space)->removeObserver(&after);
 }
 
 // An observer attached while a pair touches hears onBegin first, then what the others hear.

@@ -28,6 +28,25 @@ iPhysicsFrame* clayBox(World& w, const Vector& at) {
     return f;
 }
 
+// The world's geometry bound to f.
+iCollisionGeometry* shapeOf(const World& w, const iPhysicsFrame* f) {
+    for (iCollisionGeometry* g : w.space()->getAttachedGeometry())
+        if (g->getRigidBody() == f->getRB()) return g;
+    return nullptr;
+}
+
+// A box on a fixed platform 3 m above the floor (the platform's top at 0).
+struct BoxOnPlatform {
+    SceneFixture s{4};
+    iPhysicsFrame* platform = nullptr;
+    iPhysicsFrame* box = nullptr;
+    BoxOnPlatform() {
+        s.world->ground(-3.0f);
+        platform = s.world->fixedBox(Vector(0, -0.1f, 0), Vector(2, 0.1f, 2));
+        box = clayBox(*s.world, Vector(0, 0.5f, 0));
+    }
+};
+
 bool sleepsWithin(SceneFixture& s, iPhysicsFrame* f, float seconds) {
     for (int i = 0; i < int(seconds * 60) && !f->getDynamics()->sleeping; ++i) s.steps(1);
     return f->getDynamics()->sleeping;
@@ -74,11 +93,8 @@ TEST(SupportChange, AFloorLoweredWithSetPlaneDropsWhatSleptOnItInTheOctreeSpace)
 }
 
 TEST(SupportChange, AFixedPlatformMovedAwayDropsWhatSleptOnIt) {
-    SceneFixture s(4);
-    s.world->ground(-3.0f);
-    iPhysicsFrame* platform = s.world->fixedBox(Vector(0, -0.1f, 0), Vector(2, 0.1f, 2));
-    iPhysicsFrame* box = clayBox(*s.world, Vector(0, 0.5f, 0));
-    fallsToTheFloor(s, box, -3.0f, [&] { platform->getDynamics()->position = Vector(10, -0.1f, 0); });
+    BoxOnPlatform p;
+    fallsToTheFloor(p.s, p.box, -3.0f, [&] { p.platform->getDynamics()->position = Vector(10, -0.1f, 0); });
 }
 
 TEST(SupportChange, ADeletedSupportDropsWhatSleptOnIt) {
@@ -94,16 +110,11 @@ TEST(SupportChange, ADeletedSupportDropsWhatSleptOnIt) {
 }
 
 TEST(SupportChange, ASupportRemovedFromTheSpaceDropsWhatSleptOnIt) {
-    SceneFixture s(4);
-    s.world->ground(-3.0f);
-    iPhysicsFrame* platform = s.world->fixedBox(Vector(0, -0.1f, 0), Vector(2, 0.1f, 2));
-    iPhysicsFrame* box = clayBox(*s.world, Vector(0, 0.5f, 0));
-    iCollisionGeometry* deck = nullptr;
-    for (iCollisionGeometry* g : s.world->space()->getAttachedGeometry())
-        if (g->getRigidBody() == platform->getRB()) deck = g;
+    BoxOnPlatform p;
+    iCollisionGeometry* deck = shapeOf(*p.s.world, p.platform);
     ASSERT_NE(deck, nullptr);
-    fallsToTheFloor(s, box, -3.0f, [&] { s.world->space()->remove(deck); });
-    s.world->space()->add(deck); // the world deletes it with its space
+    fallsToTheFloor(p.s, p.box, -3.0f, [&] { p.s.world->space()->remove(deck); });
+    p.s.world->space()->add(deck); // the world deletes it with its space
 }
 
 // The change wakes only what touched the changed support: a box asleep on the ground beside it, and a box
@@ -152,9 +163,7 @@ TEST(SupportChange, ASleepingBallShrunkWithSetRadiusWakesAndSettlesAtItsNewRadiu
     s.world->ground();
     iPhysicsFrame* ball = s.world->sphere(Vector(0, 1.0f, 0), 1.0f, 1.0f);
     ball->getDynamics()->restitution = 0.0f;
-    iCollisionGeometry* shape = nullptr;
-    for (iCollisionGeometry* g : s.world->space()->getAttachedGeometry())
-        if (g->getRigidBody() == ball->getRB()) shape = g;
+    iCollisionGeometry* shape = shapeOf(*s.world, ball);
     ASSERT_NE(shape, nullptr);
     ASSERT_TRUE(sleepsWithin(s, ball, 3.0f));
     static_cast<iCSphere*>(shape)->setRadius(0.5f);
@@ -168,9 +177,7 @@ TEST(SupportChange, ASleeperWhoseOwnShapeLeavesTheSpaceFalls) {
     SceneFixture s(4);
     s.world->ground();
     iPhysicsFrame* box = clayBox(*s.world, Vector(0, 0.5f, 0));
-    iCollisionGeometry* shape = nullptr;
-    for (iCollisionGeometry* g : s.world->space()->getAttachedGeometry())
-        if (g->getRigidBody() == box->getRB()) shape = g;
+    iCollisionGeometry* shape = shapeOf(*s.world, box);
     ASSERT_NE(shape, nullptr);
     ASSERT_TRUE(sleepsWithin(s, box, 3.0f));
     const float y0 = box->getDynamics()->position.y;
@@ -184,13 +191,8 @@ TEST(SupportChange, ASleeperWhoseOwnShapeLeavesTheSpaceFalls) {
 
 // A platform made to let the box's layer through (its mask changed) drops the box asleep on it.
 TEST(SupportChange, APlatformFilteredToLetTheBoxThroughDropsIt) {
-    SceneFixture s(4);
-    s.world->ground(-3.0f);
-    iPhysicsFrame* platform = s.world->fixedBox(Vector(0, -0.1f, 0), Vector(2, 0.1f, 2));
-    iPhysicsFrame* box = clayBox(*s.world, Vector(0, 0.5f, 0));
-    iCollisionGeometry* deck = nullptr;
-    for (iCollisionGeometry* g : s.world->space()->getAttachedGeometry())
-        if (g->getRigidBody() == platform->getRB()) deck = g;
+    BoxOnPlatform p;
+    iCollisionGeometry* deck = shapeOf(*p.s.world, p.platform);
     ASSERT_NE(deck, nullptr);
-    fallsToTheFloor(s, box, -3.0f, [&] { filterOf(deck)->setMask(~std::uint32_t(1)); }); // not layer 1
+    fallsToTheFloor(p.s, p.box, -3.0f, [&] { filterOf(deck)->setMask(~std::uint32_t(1)); }); // not layer 1
 }
