@@ -131,9 +131,10 @@ private:
     void solvePointAndCone(SolverBody& a, SolverBody& b, Real bias) {
         JointRow& cone = m_rows[Cone];
         const Vec3 pointSpeed = m_point.speed(a, b);
-        Vec4r speed, old;
-        speed << pointSpeed, cone.speed(a, b) + bias;
-        old << m_point.impulse, cone.impulse;
+        // Element by element: the comma initializer's packet copy into a block of a Vec4 tripped g++ 12's
+        // -Warray-bounds in optimised builds.
+        const Vec4r speed(pointSpeed.x(), pointSpeed.y(), pointSpeed.z(), cone.speed(a, b) + bias);
+        const Vec4r old(m_point.impulse.x(), m_point.impulse.y(), m_point.impulse.z(), cone.impulse);
         Vec4r now = old;
         if (m_blockOk) now = old - Vec4r(m_blockMass * speed);
         if (!m_blockOk || now(3) < 0) { // the cone does not push: its impulse goes, the point alone holds

@@ -37,13 +37,15 @@ public:
     void solve(SolverBody& a, SolverBody& b, Real, JointPass pass, const JointSoftness& soft) override {
         if (!m_movable) return;
         const bool push = pass == JointPass::PushOut;
-        Vec6 speed, impulse;
-        speed << m_point.speed(a, b), b.w - a.w;
+        Vec6 speed, impulse; // filled by halves (a comma initializer trips g++ 12's -Warray-bounds at -O3)
+        speed.head<3>() = m_point.speed(a, b);
+        speed.tail<3>() = b.w - a.w;
         if (push) {
             speed.head<3>() += soft.biasRate * m_pointError;
             speed.tail<3>() += soft.biasRate * m_rotationError;
         }
-        impulse << m_point.impulse, m_orientation.impulse;
+        impulse.head<3>() = m_point.impulse;
+        impulse.tail<3>() = m_orientation.impulse;
         const Real massScale = push ? soft.massScale : 1, impulseScale = push ? soft.impulseScale : 0;
         const Vec6 change = -massScale * Vec6(m_mass * speed) - impulseScale * impulse;
         m_point.apply(a, b, change.head<3>());
