@@ -1,7 +1,6 @@
 // SpaceWake.cpp - a sleeping body whose support changed wakes: what it touched when last tested moved, was
 // reshaped (iCPlane::setPlane, a new radius), was given another body or a new filter (iCollisionFilter.h),
-// lost its body or left the space; and
-// a sleeping body whose own geometry leaves the space (removeNow).
+// lost its body or left the space. So does a sleeping body whose own geometry changed or left the space.
 //
 // A pair of two resting things is not tested (SimpleCollisionSpace::testPair), so nothing else would notice:
 // a crate asleep on a bridge the game deleted, on a platform it moved away or on a floor it lowered hung in
@@ -37,8 +36,8 @@ void SimpleCollisionSpace::wakeDisturbedSleepers() {
         Entry* a = activeEntryOf(n.g1);
         Entry* b = activeEntryOf(n.g2);
         const bool aStays = a && a->body == n.b1, bStays = b && b->body == n.b2;
-        if (aStays && (!bStays || b->disturbed || a->disturbed))
-            wakeSleeper(a->body, a); // or reshaped itself
-        if (bStays && (!aStays || a->disturbed || b->disturbed)) wakeSleeper(b->body, b);
+        if (aStays && bStays && !a->disturbed && !b->disturbed) continue; // the pair is as it was
+        if (aStays) wakeSleeper(a->body, a);
+        if (bStays) wakeSleeper(b->body, b);
     }
 }

@@ -40,8 +40,7 @@ public:
             error(L"iBallJoint::setConeLimit: the angle must be positive (pi or more: no cone); refused");
             return false;
         }
-        m_cone = std::min(Real(angle), kBallPi);
-        wakeBodies();
+        change(m_cone, std::min(Real(angle), kBallPi));
         return true;
     }
     float getConeLimit() const override { return float(m_cone); }
@@ -50,9 +49,8 @@ public:
             error(L"iBallJoint::setTwistLimits: needs -pi <= lower <= upper <= pi; refused");
             return false;
         }
-        m_twistLower = lower;
-        m_twistUpper = upper;
-        wakeBodies();
+        change(m_twistLower, lower);
+        change(m_twistUpper, upper);
         return true;
     }
     float getSwingAngle() const override {

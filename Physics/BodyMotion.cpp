@@ -64,10 +64,7 @@ void RigidBody::wake() {
     restTime = 0.0f;
     const RBDynamics* root = getDynamics().attachmentRoot();
     if (root == &getDynamics() || !m_scene) return;
-    if (RigidBody* r = m_scene->bodyOf(root)) {
-        r->setAsleep(false);
-        r->restTime = 0.0f;
-    }
+    if (RigidBody* r = m_scene->bodyOf(root)) r->wake();
 }
 
 } // namespace physics

@@ -28,9 +28,8 @@ public:
             error(L"iDistanceJoint::setLimits: needs finite 0 <= min <= max; refused");
             return false;
         }
-        m_min = minLength;
-        m_max = maxLength;
-        wakeBodies();
+        change(m_min, minLength);
+        change(m_max, maxLength);
         return true;
     }
     float getMinLength() const override { return float(m_min); }

@@ -37,24 +37,19 @@ public:
             error(L"iHingeJoint::setLimits: needs -pi < lower <= upper < pi; refused");
             return false;
         }
-        m_lower = lower;
-        m_upper = upper;
-        m_limitsOn = true;
-        wakeBodies();
+        change(m_lower, lower);
+        change(m_upper, upper);
+        change(m_limitsOn, true);
         return true;
     }
-    void setLimitsEnabled(bool on) override {
-        m_limitsOn = on;
-        wakeBodies();
-    }
+    void setLimitsEnabled(bool on) override { change(m_limitsOn, on); }
     bool setMotor(float speed, float maxTorque) override {
         if (!std::isfinite(speed) || !(maxTorque >= 0) || !std::isfinite(maxTorque)) {
             error(L"iHingeJoint::setMotor: needs a finite speed and a finite torque >= 0; refused");
             return false;
         }
-        m_speed = speed;
-        m_maxTorque = maxTorque;
-        wakeBodies();
+        change(m_speed, speed);
+        change(m_maxTorque, maxTorque);
         return true;
     }
     float getAngle() const override {

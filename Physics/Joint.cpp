@@ -47,8 +47,6 @@ void Joint::letGo(const RigidBody* body) {
     m_letGo = true;
 }
 
-// What a joint does changed (a setter): its bodies wake, or asleep they would never feel it (a motor turned
-// on, a spring shortened, a limit moved).
 void Joint::wakeBodies() {
     for (RigidBody* held : {m_a, m_b})
         if (held) held->wake();
@@ -83,8 +81,7 @@ bool Joint::setBreakForce(float newtons) {
         error(L"iJoint::setBreakForce: the force must be positive (infinite: never breaks); refused");
         return false;
     }
-    m_breakForce = newtons;
-    wakeBodies(); // a sleeping load may break it now
+    change(m_breakForce, newtons); // a sleeping load may break it now
     return true;
 }
 
@@ -93,8 +90,7 @@ bool Joint::setBreakTorque(float newtonMetres) {
         error(L"iJoint::setBreakTorque: the torque must be positive (infinite: never breaks); refused");
         return false;
     }
-    m_breakTorque = newtonMetres;
-    wakeBodies();
+    change(m_breakTorque, newtonMetres);
     return true;
 }
 

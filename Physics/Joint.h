@@ -40,7 +40,6 @@ public:
     // Delete(): now, or at the end of the current scene update (the step may still hold it).
     void destroy();
     static void deleteDeferred(); // the scene's update ended
-    void wakeBodies();            // its setters and its going wake both bodies
 
     // --- the solver's side ---
     int slotA = -1, slotB = -1; // the two bodies among the solver's (the world's slot for none)
@@ -85,6 +84,15 @@ public:
     Vector reactionTorque() const { return toVector(m_torque); }
 
 protected:
+    void wakeBodies(); // its going, and its setters' changes, wake both bodies
+    // A setter's write: a value that differs wakes both bodies (asleep, they would never feel a motor turned
+    // on, a spring shortened, a limit moved); the same value again wakes nothing, so a game may set it every
+    // frame and the bodies still sleep.
+    template <class Field, class Value> void change(Field& field, Value value) {
+        if (field == Field(value)) return;
+        field = Field(value);
+        wakeBodies();
+    }
     // The rows a kind uses: warm started, saved, restored and summed into the reaction generically.
     bool m_usesPoint = false, m_usesOrientation = false;
     bool m_warmStarts = true; // a spring is a force: its impulse is worked out afresh each sub-step
@@ -123,10 +131,7 @@ public:
     Vector getLocalAnchorA() const override { return localAnchorA(); }
     Vector getLocalAnchorB() const override { return localAnchorB(); }
     bool isActive() const override { return acting(); }
-    void setCollideConnected(bool collide) override {
-        collideConnected = collide;
-        wakeBodies();
-    }
+    void setCollideConnected(bool collide) override { change(collideConnected, collide); }
     bool getCollideConnected() const override { return collideConnected; }
     bool setBreakForce(float newtons) override { return Joint::setBreakForce(newtons); }
     bool setBreakTorque(float newtonMetres) override { return Joint::setBreakTorque(newtonMetres); }

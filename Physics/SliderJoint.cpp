@@ -37,24 +37,19 @@ public:
             error(L"iSliderJoint::setLimits: needs finite lower <= upper; refused");
             return false;
         }
-        m_lower = lower;
-        m_upper = upper;
-        m_limitsOn = true;
-        wakeBodies();
+        change(m_lower, lower);
+        change(m_upper, upper);
+        change(m_limitsOn, true);
         return true;
     }
-    void setLimitsEnabled(bool on) override {
-        m_limitsOn = on;
-        wakeBodies();
-    }
+    void setLimitsEnabled(bool on) override { change(m_limitsOn, on); }
     bool setMotor(float speed, float maxForce) override {
         if (!std::isfinite(speed) || !(maxForce >= 0) || !std::isfinite(maxForce)) {
             error(L"iSliderJoint::setMotor: needs a finite speed and a finite force >= 0; refused");
             return false;
         }
-        m_speed = speed;
-        m_maxForce = maxForce;
-        wakeBodies();
+        change(m_speed, speed);
+        change(m_maxForce, maxForce);
         return true;
     }
     float getPosition() const override {

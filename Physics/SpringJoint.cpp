@@ -40,23 +40,20 @@ public:
     bool setRestLength(float length) override {
         if (!(length >= 0) || !std::isfinite(length))
             return refuse(L"iSpring::setRestLength: needs a finite length >= 0");
-        m_rest = length;
-        wakeBodies();
+        change(m_rest, length);
         return true;
     }
     float getRestLength() const override { return float(m_rest); }
     bool setStiffness(float k) override {
         if (!(k >= 0) || !std::isfinite(k)) return refuse(L"iSpring::setStiffness: needs a finite k >= 0");
-        m_k = k;
-        m_byFrequency = false;
-        wakeBodies();
+        change(m_k, k);
+        change(m_byFrequency, false);
         return true;
     }
     bool setDamping(float c) override {
         if (!(c >= 0) || !std::isfinite(c)) return refuse(L"iSpring::setDamping: needs a finite c >= 0");
-        m_c = c;
-        m_byFrequency = false;
-        wakeBodies();
+        change(m_c, c);
+        change(m_byFrequency, false);
         return true;
     }
     float getStiffness() const override { return float(m_k); }
@@ -64,16 +61,14 @@ public:
     bool setFrequency(float hertz, float dampingRatio) override {
         if (!(hertz > 0) || !std::isfinite(hertz) || !(dampingRatio >= 0) || !std::isfinite(dampingRatio))
             return refuse(L"iSpring::setFrequency: needs finite hertz > 0 and ratio >= 0");
-        m_hertz = hertz;
-        m_ratio = dampingRatio;
-        m_byFrequency = true;
-        wakeBodies();
+        change(m_hertz, hertz);
+        change(m_ratio, dampingRatio);
+        change(m_byFrequency, true);
         return true;
     }
     bool setMaxForce(float newtons) override {
         if (!(newtons > 0)) return refuse(L"iSpring::setMaxForce: needs a force > 0 (infinite: no limit)");
-        m_maxForce = newtons;
-        wakeBodies();
+        change(m_maxForce, newtons);
         return true;
     }
     float getLength() const override { return float(anchorDistance()); }

@@ -172,9 +172,9 @@ TEST(Wake, AddingOrRemovingAForceGeneratorWakesItsBody) {
     expectUniformAcceleration(floating, y0, -resolution_test::kG, 30);
 }
 
-// A joint's setters wake its bodies: a motor turned on at a sleeping hinge drives it at the motor's speed; a
-// spring shortened by 0.5 m under a sleeping box lifts it 0.5 m (k = 100 N/m, critically damped, 1 kg).
-// Asleep, neither felt the change.
+// A joint's setters wake its bodies when they change something: a motor turned on at a sleeping hinge drives
+// it at the motor's speed; a spring shortened by 0.5 m under a sleeping box lifts it 0.5 m (k = 100 N/m,
+// critically damped, 1 kg). Asleep, neither felt the change.
 TEST(Wake, AJointsSettersWakeItsBodies) {
     SceneFixture s(4);
     iPhysicsFrame* wheel = s.world->box(Vector(0, 3, 0), Vector(0.5f, 0.5f, 0.1f), 1.0f);
@@ -188,6 +188,12 @@ TEST(Wake, AJointsSettersWakeItsBodies) {
     ASSERT_TRUE(sleepsWithin(s, wheel, 3.0f));
     ASSERT_TRUE(sleepsWithin(s, box, 3.0f));
     const float boxY = box->getDynamics()->position.y;
+    // The same values again (a game setting them every frame) change nothing: both sleep on.
+    ASSERT_TRUE(hinge->setMotor(0.0f, 0.0f));
+    ASSERT_TRUE(spring->setRestLength(spring->getRestLength()));
+    s.steps(1);
+    EXPECT_TRUE(wheel->getDynamics()->sleeping);
+    EXPECT_TRUE(box->getDynamics()->sleeping);
     ASSERT_TRUE(hinge->setMotor(2.0f, 100.0f));
     ASSERT_TRUE(spring->setRestLength(1.5f - stretch - 0.5f));
     s.seconds(3.0f);
