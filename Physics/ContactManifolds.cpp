@@ -34,6 +34,11 @@ int ContactSolver::bodyIndex(RBDynamics* root, const SolverBodyAccess& access) {
 void ContactSolver::buildManifolds(const CollisionContact* contacts, size_t count,
                                    const SolverBodyAccess& access) {
     m_manifolds.clear();
+    // Room to spare (this list and last step's swap every step): a warm scene whose pair count wanders a
+    // little above any it had does not allocate each time it does.
+    const size_t room = m_last.size() + m_last.size() / 2 + 16;
+    if (m_manifolds.capacity() < room) m_manifolds.reserve(room);
+    if (m_dormant.capacity() < m_last.size()) m_dormant.reserve(room); // last step's that rest, at most all
     FlatMap<PairKey, size_t, PairKeyHash>& current = m_current;
     current.clear();
     m_maxDepthBefore = 0;
