@@ -99,7 +99,7 @@ TEST(BallSpin, SpinAboutTheRodIsKept) {
 // torque). Spun about no principal axis, a 1 x 2 x 3 m box keeps its world angular momentum I_world w and
 // its energy 1/2 w . L while w itself wanders (the solver turns it; the integrator keeps the gyroscopic
 // change; measured: 2.3 % over 3 s, as the solver turns a body to first order); a cube, whose inertia is the
-// same about every axis, keeps w itself. (Turned as if isotropic, the box's L went 74 % astray.)
+// same about every axis, keeps w itself. (Without the gyroscopic change, the box's L went 74 % astray.)
 TEST(BallSpin, APinnedBodyTurnsAsAFreeBody) {
     struct Case {
         const char* what;
