@@ -230,13 +230,13 @@ void ContactBlocks::warmStart(std::vector<SolverBody>& bodies, bool firstSubstep
 
 void ContactBlocks::solve(std::vector<SolverBody>& bodies, const Sweep& sweep) {
     loadVelocities(bodies);
-    if (!sweep.pushOut) loadPoses(bodies);
+    if (sweep.measureGaps) loadPoses(bodies);
     const Lanes zero(0), one(1), h(sweep.h), touch(-sweep.touchOverlap), impact(-sweep.restitutionThreshold),
         maxPush(-sweep.maxPushSpeed);
     for (ContactBlock& block : m_blocks) {
-        // Positions do not change within a sweep, nor between the velocity sweep and the push out that
-        // follows it: the gaps are measured once for both.
-        if (!sweep.pushOut) measureGaps(block);
+        // Positions do not change within a sweep, nor between a relax sweep and the next sub-step's velocity
+        // sweep and push out: the gaps are measured once for all three.
+        if (sweep.measureGaps) measureGaps(block);
         // Each point's target: reach v_n = -bias, softly (see ContactSolver::solveContacts).
         Lanes bias[4], massScale[4], impulseScale[4];
         for (int i = 0; i < block.points; ++i) {

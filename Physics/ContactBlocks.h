@@ -49,8 +49,9 @@ class ContactBlocks {
 public:
     // What a sweep needs of the solver's settings.
     struct Sweep {
-        Real h;       // the sub-step
-        bool pushOut; // overlap pushed out softly (else only approach stopped)
+        Real h;           // the sub-step
+        bool pushOut;     // overlap pushed out softly (else only approach stopped)
+        bool measureGaps; // each point's gap at the bodies' poses first (else the last measured still hold)
         Real touchOverlap, restitutionThreshold, maxPushSpeed;
     };
 
@@ -64,8 +65,8 @@ public:
     void prepare(std::vector<Manifold>& manifolds, const std::vector<SolverBody>& bodies);
     // Re-applies the accumulated impulses (an impact's only in the first sub-step).
     void warmStart(std::vector<SolverBody>& bodies, bool firstSubstep, Real impactSpeed);
-    // One sweep: per manifold the normal impulses twice, friction, the normal impulses again. The velocity
-    // and relax sweeps (not pushOut) measure each point's gap at the bodies' poses first.
+    // One sweep: per manifold the normal impulses twice, friction, the normal impulses again, each point
+    // measured against its gap (measured first when the sweep says so).
     void solve(std::vector<SolverBody>& bodies, const Sweep& sweep);
     void saveImpulses();
     void restoreImpulses();

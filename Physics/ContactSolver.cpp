@@ -133,16 +133,18 @@ void ContactSolver::solve(Real dt, const SolverBodyAccess& access) {
         warmStart(i == 0);
         warmStartJoints();
         solveJoints(h, JointPass::Velocity);
-        solveContacts(h, false); // the velocities: approach stopped, nothing pushed
-        propagateShock(h);       // what a light body under a heavy one could not stop
+        // the velocities: approach stopped, nothing pushed (the gaps measured by the last relax sweep hold:
+        // nothing has moved since)
+        solveContacts(h, false, i == 0);
+        propagateShock(h); // what a light body under a heavy one could not stop
         saveVelocities();
         solveJoints(h, JointPass::PushOut);
-        solveContacts(h, true); // the push out, on top (at the same poses: the gaps just measured)
-        moveBodies(h);          // by the velocities plus the push, capped
-        restoreVelocities();    // the push out's velocity is not kept
-        prepareJoints(h);       // the joints' rows at the new poses (the next sub-step starts there too)
+        solveContacts(h, true, false); // the push out, on top (at the same poses and gaps)
+        moveBodies(h);                 // by the velocities plus the push, capped
+        restoreVelocities();           // the push out's velocity is not kept
+        prepareJoints(h); // the joints' rows at the new poses (the next sub-step starts there too)
         solveJoints(h, JointPass::Relax);
-        solveContacts(h, false); // relax: the velocities again, at the new poses
+        solveContacts(h, false, true); // relax: the velocities again, at the new poses
     }
     m_blocks.unpack(m_manifolds);
     findBounces();
@@ -244,8 +246,8 @@ void ContactSolver::warmStart(bool firstSubstep) {
 // already stopped (a soft target there relaxes the impact's accumulated impulse and lets the same few %
 // through). Otherwise, in the push out, overlap is pushed out softly at a capped speed; in the velocity and
 // relax sweeps only approach is stopped.
-void ContactSolver::solveContacts(Real h, bool pushOut) {
-    m_blocks.solve(m_bodies, ContactBlocks::Sweep{h, pushOut, m_settings.touchOverlap,
+void ContactSolver::solveContacts(Real h, bool pushOut, bool measureGaps) {
+    m_blocks.solve(m_bodies, ContactBlocks::Sweep{h, pushOut, measureGaps, m_settings.touchOverlap,
                                                   m_settings.restitutionThreshold, m_settings.maxPushSpeed});
 }
 

@@ -179,7 +179,7 @@ private:
     void splitForces();
     void addForces(Real share);
     void warmStart(bool firstSubstep);
-    void solveContacts(Real h, bool pushOut);
+    void solveContacts(Real h, bool pushOut, bool measureGaps);
     void saveVelocities();
     void moveBodies(Real h);
     void restoreVelocities();
