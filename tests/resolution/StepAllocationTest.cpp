@@ -40,3 +40,23 @@ TEST(StepAllocation, AFallingPileWithListenersStepsWithoutAllocating) {
     for (int frame = 0; frame < 212; ++frame) f.steps(1, [&] { spec->act(*f.world, frame); });
     EXPECT_EQ(allocationsOfWarmSteps(f, 0, 60), 0);
 }
+
+TEST(StepAllocation, APyramidFallingAsleepDoesNotAllocate) {
+    // The step a settled pyramid falls asleep sets aside every manifold it rests on at once (kept, unsolved,
+    // until it wakes): a list that was empty until then. It had room since the contacts first grew.
+    SceneFixture f(4);
+    buildPyramid(*f.world, 10);
+    const RBDynamics* top = f.world->bodies().back()->getDynamics();
+    f.steps(30);
+    ASSERT_FALSE(top->sleeping) << "the pyramid must fall asleep within the counted steps";
+    const long before = guardian_test::allocationCount();
+    int steps = 0;
+    while (!top->sleeping && steps < 600) {
+        f.steps(1);
+        ++steps;
+    }
+    f.steps(10);
+    const long made = guardian_test::allocationCount() - before;
+    ASSERT_TRUE(top->sleeping) << "it did not fall asleep in 10 s";
+    EXPECT_EQ(made, 0) << "asleep after " << steps << " more steps";
+}
