@@ -17,8 +17,7 @@ bool joinedWithoutContact(const RigidBody* body, const iRigidBody* other) {
 }
 } // namespace
 
-size_t ContinuousStage::run(const std::vector<RigidBody*>& bodies, iCollisionSpace* space) {
-    iShapeCast* cast = space ? castOf(space) : nullptr;
+size_t ContinuousStage::run(const std::vector<RigidBody*>& bodies, iShapeCast* cast) {
     if (!cast) return 0;
     m_sweeps.clear();
     m_owners.clear();

@@ -23,8 +23,9 @@ class RigidBody;
 
 class ContinuousStage {
 public:
-    // Sweeps the awake movable unattached bodies' motion of this step; returns how many were put back.
-    size_t run(const std::vector<RigidBody*>& bodies, iCollisionSpace* space);
+    // Sweeps the awake movable unattached bodies' motion of this step in the space's shape cast (nullptr:
+    // none); returns how many were put back.
+    size_t run(const std::vector<RigidBody*>& bodies, iShapeCast* cast);
 
 private:
     std::vector<BodySweep> m_sweeps; // scratch, reused: a step allocates nothing after warm-up

@@ -87,7 +87,7 @@ void PhysicsScene::remove(const iRigidBody* o) {
 
 void PhysicsScene::setNewGlobalCollisionSpace(iCollisionSpace* cs) {
     // Deleting the space later is safe: the scene hears of it (onSpaceDestroyed) and forgets it.
-    m_space = cs;
+    setSpace(cs);
     ++m_spaceVersion; // contacts gathered from the old space are not resolved
     // The space measures its tolerances in the scene's unit (a space the game scaled itself is told again).
     if (iCollisionSpaceScale* scale = scaleOf(cs)) scale->setLengthUnitsPerMetre(m_lengthUnit);
@@ -343,7 +343,7 @@ void PhysicsScene::step(float dt) {
 
     // 7b. Continuous collision: a body whose motion passed into or through something goes back to where it
     //     first touched it; the next step resolves that contact (ContinuousStage.h).
-    if (m_continuousOn) m_continuous.run(bodies(), m_space);
+    if (m_continuousOn) m_continuous.run(bodies(), m_spaceCast);
     m_profiler.lap(&PhysicsProfile::continuous);
 
     // 8. A step that produced NaN or Inf (absurd forces) is undone; otherwise it is the new valid state.

@@ -25,6 +25,8 @@
 #include <unordered_map>
 #include <vector>
 
+class iCollisionEvents;
+
 namespace physics {
 
 class RigidBody;
@@ -157,7 +159,11 @@ private:
     std::vector<Joint*> m_joints, m_brokenJoints; // this step's joints; those that broke in it
     std::vector<iFixedUpdater*> m_updaters;       // nullptr: removed during a step, compacted after it
     std::vector<PhysicsScene*> m_deferredScenes;  // deleted from callbacks of this scene's update
+    // The collision space, and the two of its optional roles every step uses (looked up once, in setSpace).
     iCollisionSpace* m_space = nullptr;
+    iCollisionEvents* m_spaceEvents = nullptr;
+    iShapeCast* m_spaceCast = nullptr;
+    void setSpace(iCollisionSpace* space);
     unsigned m_spaceVersion = 0;         // changes whenever m_space does (its contact list is then gone)
     unsigned long long m_membership = 0; // changes whenever a body joins or leaves (snapshots)
 

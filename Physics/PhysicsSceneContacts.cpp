@@ -5,16 +5,23 @@
 #include "RigidBody.h"
 #include "iCollisionEvents.h"
 #include "iCollisionSpaceScale.h"
+#include "iShapeCast.h"
 #include "iUtilities.h"
 
 namespace physics {
 
+void PhysicsScene::setSpace(iCollisionSpace* space) {
+    m_space = space;
+    m_spaceEvents = space ? eventsOf(space) : nullptr;
+    m_spaceCast = space ? castOf(space) : nullptr;
+}
+
 void PhysicsScene::holdCollisionEvents() {
-    if (iCollisionEvents* events = m_space ? eventsOf(m_space) : nullptr) events->holdEvents(true);
+    if (m_spaceEvents) m_spaceEvents->holdEvents(true);
 }
 
 void PhysicsScene::deliverCollisionEvents() {
-    iCollisionEvents* events = m_space ? eventsOf(m_space) : nullptr;
+    iCollisionEvents* events = m_spaceEvents;
     if (!events || !m_listenersOn) return; // listeners off: the held events are never delivered
     beginSteps(); // listeners may delete bodies and scenes, or call update(): as in a step
     events->deliverEvents();

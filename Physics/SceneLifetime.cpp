@@ -145,7 +145,7 @@ void PhysicsScene::flushDeferred() {
 void PhysicsScene::onSpaceDestroyed(const iCollisionSpace* dying, void* self) {
     auto* scene = static_cast<PhysicsScene*>(self);
     if (scene->m_space != dying) return;
-    scene->m_space = nullptr; // as if setNewGlobalCollisionSpace(nullptr): the bodies stop colliding
+    scene->setSpace(nullptr); // as if setNewGlobalCollisionSpace(nullptr): the bodies stop colliding
     ++scene->m_spaceVersion;
 }
 
