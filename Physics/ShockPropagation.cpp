@@ -109,10 +109,12 @@ void ContactSolver::propagateShock(Real h) {
         // On the immovable world the impulse is the ordinary one (momentum is not at stake): it is
         // accumulated, so that friction is bounded by it.
         const bool onWorld = !movable(upperIsB ? a : b);
+        Real gaps[4]; // the pass moves no body: each point's gap holds for both passes
+        for (int i = 0; i < m.count; ++i) gaps[i] = std::max(Real(0), separation(a, b, m.points[i]));
         for (int pass = 0; pass < 2; ++pass) // a box's corners: twice, like the normal passes
             for (int i = 0; i < m.count; ++i) {
                 ContactPoint& p = m.points[i];
-                const Real gap = std::max(Real(0), separation(a, b, p));
+                const Real gap = gaps[i];
                 const Real vn = normalSpeed(a, b, p);
                 if (vn >= -gap / h) continue;
                 const Vec3& arm = upperIsB ? p.armB : p.armA;
