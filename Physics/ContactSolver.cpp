@@ -50,12 +50,15 @@ namespace {
 
 // Moves b by dp and turns it about its centre of mass by the rotation vector dtheta (first order).
 void turnAndMove(SolverBody& b, const Vec3& dp, const Vec3& dtheta) {
-    Vec3 offset = b.rotation.conjugate() * (b.origin - b.com); // the root's origin, body axes
+    // The usual body has its origin at its centre of mass: nothing to turn about the centre.
+    const bool centred = b.origin == b.com;
+    Vec3 offset =
+        centred ? Vec3(Vec3::Zero()) : Vec3(b.rotation.conjugate() * (b.origin - b.com)); // body axes
     Quat spin(0.0f, 0.5f * dtheta.x(), 0.5f * dtheta.y(), 0.5f * dtheta.z());
     b.rotation.coeffs() += (spin * b.rotation).coeffs();
     b.rotation.normalize();
     b.com += dp;
-    b.origin = b.com + b.rotation * offset;
+    b.origin = centred ? b.com : Vec3(b.com + b.rotation * offset);
 }
 
 } // namespace
