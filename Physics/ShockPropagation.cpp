@@ -23,6 +23,18 @@
 namespace physics {
 
 void ContactSolver::orderByLevel() {
+    m_shock.clear();
+    // Only a pair of movable bodies, one kHeavyRatio times the other's mass (either way up), can be kept
+    // below (an upper body is never immovable: those are level 0): with none, the levels are not worked out
+    // at all.
+    const auto outweighs = [](const SolverBody& upper, const SolverBody& lower) {
+        return movable(upper) && movable(lower) && upper.invMass * kHeavyRatio < lower.invMass;
+    };
+    if (std::none_of(m_manifolds.begin(), m_manifolds.end(), [&](const Manifold& m) {
+            const SolverBody &a = m_bodies[size_t(m.a)], &b = m_bodies[size_t(m.b)];
+            return outweighs(a, b) || outweighs(b, a);
+        }))
+        return;
     const int n = int(m_bodies.size());
     m_level.assign(size_t(n), INT_MAX);
     // Each body's manifolds, as one list per body in one array (m_touching[m_touchStart[i] ..]).
@@ -55,7 +67,6 @@ void ContactSolver::orderByLevel() {
             queue.push_back(other);
         }
     }
-    m_shock.clear();
     for (size_t k = 0; k < m_manifolds.size(); ++k) {
         const Manifold& m = m_manifolds[k];
         const int la = m_level[size_t(m.a)], lb = m_level[size_t(m.b)];
@@ -63,11 +74,10 @@ void ContactSolver::orderByLevel() {
         m_shock.push_back({k, lb > la}); // (manifold, whether b is the upper body)
     }
     // Only under a heavy body (below): with no heavy pair at all, nothing is kept, and the sort is skipped.
-    const auto heavyPair = [this](const std::pair<size_t, bool>& shock) {
+    const auto heavyPair = [&](const std::pair<size_t, bool>& shock) {
         const Manifold& m = m_manifolds[shock.first];
-        const SolverBody &u = m_bodies[size_t(shock.second ? m.b : m.a)],
-                         &l = m_bodies[size_t(shock.second ? m.a : m.b)];
-        return movable(l) && u.invMass * kHeavyRatio < l.invMass;
+        return outweighs(m_bodies[size_t(shock.second ? m.b : m.a)],
+                         m_bodies[size_t(shock.second ? m.a : m.b)]);
     };
     if (std::none_of(m_shock.begin(), m_shock.end(), heavyPair)) {
         m_shock.clear();
