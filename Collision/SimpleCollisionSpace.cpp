@@ -454,9 +454,10 @@ void SimpleCollisionSpace::layOutEntries() {
 
 namespace {
 
-// Entries ahead (bench_compare's broadphase row, 10,000 boxes, six runs each, alternated: after a move 1.43
-// ms at 4 against 1.85 at 12, the distance first chosen; with nothing moved the same, 0.6-0.7 ms).
-constexpr int kFetchAhead = 4;
+// Entries ahead. bench_compare's broadphase row (10,000 boxes, the tree's candidate stage after a move) does
+// not settle between 4 and 12: run alone (a fresh heap), 1.43 ms at 4 against 1.85 at 12 (median of six
+// each); after the rest of the benchmark (an aged heap), 1.75-1.82 at 4 against 1.50-1.52 at 12.
+constexpr int kFetchAhead = 12;
 // Asks for the cache line at p to be loaded (a hint: no effect where the compiler has no such builtin).
 inline void fetchAhead(const void* p) {
 #if defined(__GNUC__) || defined(__clang__)
