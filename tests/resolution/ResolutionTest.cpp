@@ -14,6 +14,7 @@
 #include <algorithm>
 #include <cmath>
 #include <random>
+#include <vector>
 
 using namespace resolution_test;
 
@@ -126,17 +127,45 @@ TEST(Resolution, NewtonsCradlePassesTheMomentumToTheLastBall) {
         EXPECT_LT(balls[i]->getDynamics()->velocity.length(), 0.05f * 2.0f) << "ball " << i;
 }
 
-// KNOWN FAILING (issue 6 stays open): measured top drift 5.3 cm (limit 1 cm), resting penetration 7.3 mm
-// (limit slop + 1 mm = 6 mm) at 10 iterations; the boxes sink within the 5 mm slop while a cold-started
-// stack converges. Disabled so CI stays meaningful; enable it with the fix (sub-stepping or contact margins).
+namespace {
+
+// Moves every body of the world up to 1 um in x and z (a start just apart from the built one).
+void jitterStart(World& world, unsigned seed) {
+    std::mt19937 rng{seed};
+    std::uniform_real_distribution<float> offset(-1e-6f, 1e-6f);
+    for (const iPhysicsFrame* frame : world.bodies()) {
+        RBDynamics* d = const_cast<iPhysicsFrame*>(frame)->getDynamics();
+        d->position.x += offset(rng);
+        d->position.z += offset(rng);
+    }
+}
+
+float medianOfStarts(std::vector<float> v) {
+    std::sort(v.begin(), v.end());
+    return v[v.size() / 2];
+}
+
+} // namespace
+
+// A tower of ten unit boxes stands 10 s: its top moves less than 1 cm and its deepest contact overlaps no
+// more than its soft spring's give. Both are chaotic: started 1 um apart, one build's top at 4 iterations
+// moved 5.0 to 14.8 mm in 10 s and its deepest overlap was 1.1 to 1.7 mm, so a single start passes or fails
+// by chance when the arithmetic changes. Each figure is the median of five starts: as built, and four with
+// every box moved up to 1 um in x and z.
 TEST(Resolution, TowerOfTenStandsTenSecondsWithTopDriftUnder1cm) {
     for (int iterations : {4, 10}) { // the default, and the issue's count
-        SceneFixture f(iterations);
-        buildTower(*f.world, 10);
-        RBDynamics* top = f.world->bodies().back()->getDynamics();
-        Vector start = top->position;
-        f.seconds(10.0f);
-        float drift = (top->position - start).length(); // sideways and sinking
+        std::vector<float> drifts, overlaps;
+        for (unsigned start = 0; start < 5; ++start) {
+            SceneFixture f(iterations);
+            buildTower(*f.world, 10);
+            if (start > 0) jitterStart(*f.world, start);
+            RBDynamics* top = f.world->bodies().back()->getDynamics();
+            Vector begin = top->position;
+            f.seconds(10.0f);
+            drifts.push_back((top->position - begin).length()); // sideways and sinking
+            overlaps.push_back(statsOf(f.scene)->getRemainingPenetration());
+        }
+        const float drift = medianOfStarts(drifts), overlap = medianOfStarts(overlaps);
         EXPECT_LT(drift, 0.01f) << iterations << " iterations";
         // There is no slop: a resting contact overlaps by its soft spring's give, load / (m_eff w^2). The
         // deepest is the lowest box-box interface: nine boxes on four corners (22 N each) of effective mass
@@ -144,13 +173,12 @@ TEST(Resolution, TowerOfTenStandsTenSecondsWithTopDriftUnder1cm) {
         // at a quarter of the sub-step rate.
         const float f_hz = std::min(100.0f, 0.25f * 60.0f * float(iterations));
         const float w = 2.0f * 3.14159265f * f_hz, give = (9.0f * kG / 4.0f) * 8.0f / (w * w);
-        EXPECT_LT(statsOf(f.scene)->getRemainingPenetration(), 1.2f * give) << iterations << " iterations";
+        EXPECT_LT(overlap, 1.2f * give) << iterations << " iterations";
         if (iterations == 10) { // the issue's bound: the slop (none) plus 1 mm
-            EXPECT_LT(statsOf(f.scene)->getRemainingPenetration(), 0.001f);
+            EXPECT_LT(overlap, 0.001f);
         }
         RecordProperty("tower_drift_m_" + std::to_string(iterations), std::to_string(drift));
-        RecordProperty("tower_overlap_m_" + std::to_string(iterations),
-                       std::to_string(statsOf(f.scene)->getRemainingPenetration()));
+        RecordProperty("tower_overlap_m_" + std::to_string(iterations), std::to_string(overlap));
     }
 }
 
