@@ -30,7 +30,8 @@ float heavyOnLight(float ratio, int iterations, float seconds) {
 
 TEST(MassRatio, OneTonneOnOneKilogramHoldsAtTheDefaultIterations) {
     // 1:10^3 at the default 4 iterations: within 5 cm of resting height for 5 s. Before shock propagation
-    // it sank 1.05 m, through the light box; measured after: 3.9 mm.
+    // it sank 1.05 m, through the light box; measured after: 3.9 mm. This is the aligned stack only: set 1 um
+    // off, the heavy box walks sideways up to 121 mm (README, Known limits), which no test asserts yet.
     const float strayed = heavyOnLight(1000.0f, 4, 5.0f);
     EXPECT_LT(strayed, 0.05f);
     RecordProperty("strayed_m", std::to_string(strayed));
