@@ -87,8 +87,7 @@ void PhysicsScene::remove(const iRigidBody* o) {
 
 void PhysicsScene::setNewGlobalCollisionSpace(iCollisionSpace* cs) {
     // Deleting the space later is safe: the scene hears of it (onSpaceDestroyed) and forgets it.
-    setSpace(cs);
-    ++m_spaceVersion; // contacts gathered from the old space are not resolved
+    setSpace(cs); // contacts gathered from the old space are not resolved
     // The space measures its tolerances in the scene's unit (a space the game scaled itself is told again).
     if (iCollisionSpaceScale* scale = scaleOf(cs)) scale->setLengthUnitsPerMetre(m_lengthUnit);
 

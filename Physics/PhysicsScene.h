@@ -116,6 +116,7 @@ private:
     ~PhysicsScene();
     void step(float dt);
     void wakeAll(); // every sleeping body wakes (sleeping switched off, gravity changed)
+    void setSpace(iCollisionSpace* space); // the space, its roles looked up, its version bumped
     void runFixedUpdaters(float dt);
     // The space's contacts at the current poses (none when it was replaced since spaceVersion).
     void findContacts(float dt, unsigned spaceVersion, const CollisionContact*& contacts, size_t& count);
@@ -163,7 +164,6 @@ private:
     iCollisionSpace* m_space = nullptr;
     iCollisionEvents* m_spaceEvents = nullptr;
     iShapeCast* m_spaceCast = nullptr;
-    void setSpace(iCollisionSpace* space);
     unsigned m_spaceVersion = 0;         // changes whenever m_space does (its contact list is then gone)
     unsigned long long m_membership = 0; // changes whenever a body joins or leaves (snapshots)
 

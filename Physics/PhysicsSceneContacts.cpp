@@ -14,6 +14,7 @@ void PhysicsScene::setSpace(iCollisionSpace* space) {
     m_space = space;
     m_spaceEvents = space ? eventsOf(space) : nullptr;
     m_spaceCast = space ? castOf(space) : nullptr;
+    ++m_spaceVersion;
 }
 
 void PhysicsScene::holdCollisionEvents() {
@@ -83,10 +84,7 @@ void PhysicsScene::setSleepingEnabled(bool on) {
 }
 
 void PhysicsScene::wakeAll() {
-    for (RigidBody* b : bodies()) {
-        b->setAsleep(false);
-        b->restTime = 0;
-    }
+    for (RigidBody* b : bodies()) b->wake();
 }
 
 size_t PhysicsScene::getAwakeBodyCount() const {

@@ -146,7 +146,6 @@ void PhysicsScene::onSpaceDestroyed(const iCollisionSpace* dying, void* self) {
     auto* scene = static_cast<PhysicsScene*>(self);
     if (scene->m_space != dying) return;
     scene->setSpace(nullptr); // as if setNewGlobalCollisionSpace(nullptr): the bodies stop colliding
-    ++scene->m_spaceVersion;
 }
 
 } // namespace physics
