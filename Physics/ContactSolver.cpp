@@ -178,25 +178,33 @@ ContactSolver::Softness ContactSolver::softness(Real omega, Real dampingRatio, R
     return Softness{omega / a1, a2 * a3, a3};
 }
 
-// A resting contact gives |g| / w^2 whatever the bodies' size: a pair whose smaller shape is so small that
-// this is more than restingOverlap of its radius gets the stiffness that makes it so, up to maxContactTurn
-// a sub-step. Metre-sized shapes keep the world's softness, bit for bit.
+// A resting point gives load / (m_eff w^2): |g| / w^2 for a body on the ground, whatever its size, but many
+// times that under a stack or a heavy body (the load is last step's impulse, the mass the point's effective
+// mass: a 1 t box on a 1 kg one sank 69 mm into it and walked sideways). A pair whose give would be more than
+// restingOverlap of its smaller shape's radius gets the stiffness that makes it so, up to maxContactTurn a
+// sub-step. Metre-sized shapes under light loads keep the world's softness, bit for bit.
 ContactSolver::Softness ContactSolver::contactSoftness(const Manifold& m, Real h) const {
     const Real allowed = m_settings.restingOverlap * m.size;
-    if (!(allowed > 0.0f) || !(m_settings.gravity > allowed * m_omega * m_omega)) return m_soft;
-    const Real omega =
-        std::min(Real(std::sqrt(m_settings.gravity / allowed)), Real(m_settings.maxContactTurn / h));
+    // What each unit of the contact's effective mass carries: its own weight at least, or what last step's
+    // impulses held up (a stack's lower contacts, a heavy body on a light one).
+    Real load = m_settings.gravity;
+    for (int i = 0; i < m.count; ++i) {
+        const ContactPoint& p = m.points[i];
+        if (p.normalMass > 0.0f) load = std::max(load, p.normalImpulse / (h * p.normalMass));
+    }
+    if (!(allowed > 0.0f) || !(load > allowed * m_omega * m_omega)) return m_soft;
+    const Real omega = std::min(Real(std::sqrt(load / allowed)), Real(m_settings.maxContactTurn / h));
     return omega > m_omega ? softness(omega, m_settings.dampingRatio, h) : m_soft;
 }
 
 // Each manifold's soft contact, then every point's rows at the step's start (the normal and, with friction,
 // the two tangents) in the blocks, four lanes at a time (ContactBlocks::prepare).
 void ContactSolver::prepare(Real dt, Real h) {
+    m_blocks.prepare(m_manifolds, m_bodies);
     for (Manifold& m : m_manifolds) {
         const Softness soft = contactSoftness(m, h);
         m_blocks.setSoftness(m, soft.biasRate, soft.massScale, soft.impulseScale);
     }
-    m_blocks.prepare(m_manifolds, m_bodies);
     for (Manifold& m : m_manifolds) {
         const SolverBody &a = m_bodies[m.a], &b = m_bodies[m.b];
         for (int i = 0; i < m.count; ++i) {

@@ -58,13 +58,15 @@ struct SolverSettings {
     bool warmStart = true;             // start from last step's impulses
     CombineRule friction = COMBINE_Sum;    // the seed's rule: the two bodies' values added
     CombineRule restitution = COMBINE_Max; // a superball bounces off anything
-    // What follows a body's own size: a resting contact's overlap is the soft contact's give, load /
-    // (m_eff w^2), about |g| / w^2 (0.07 mm at 60 Hz), the same for a 1 mm cube and a 1 km rock. A pair
-    // whose smaller shape is small enough that this give exceeds restingOverlap of its bounding radius gets
-    // a stiffer contact, w = sqrt(|g| / (restingOverlap r)), at most maxContactTurn radians a sub-step
-    // (w h <= 2 pi: the soft step still moves less than a quarter of the gap a sub-step, no overshoot). With
-    // the default 4 sub-steps at 60 Hz, the world's own stiffness serves every shape of radius over 14 mm,
-    // and a body down to 0.9 mm across rests within 0.5 % of its size.
+    // What follows a body's own size and load: a resting contact's overlap is the soft contact's give, load
+    // / (m_eff w^2), about |g| / w^2 (0.07 mm at 60 Hz) for a body on the ground, the same for a 1 mm cube
+    // and a 1 km rock, but a thousand times that for a 1 t box on a 1 kg one. A pair whose give exceeds
+    // restingOverlap of its smaller shape's bounding radius (load per unit mass: |g| at least, or what last
+    // step's impulses carried) gets a stiffer contact, w = sqrt(load / (restingOverlap r)), at most
+    // maxContactTurn radians a sub-step (w h <= 2 pi: the soft step still moves less than a quarter of the
+    // gap a sub-step, no overshoot). With the default 4 sub-steps at 60 Hz, the world's own stiffness serves
+    // every shape of radius over 14 mm on the ground, and a body down to 0.9 mm across rests within 0.5 % of
+    // its size.
     float gravity = 9.81f;         // |g|, in length units per s^2 (the scene's gravity)
     float restingOverlap = 0.005f; // of the smaller shape's bounding radius
     float maxContactTurn = 6.2831853f;

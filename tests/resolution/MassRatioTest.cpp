@@ -1,5 +1,5 @@
-// MassRatioTest.cpp - heavy boxes resting on light ones (issue 11 item 6): the top box stays within 5 cm of
-// its resting height over 5 s, and equal masses are left as they were.
+// MassRatioTest.cpp - heavy boxes resting on light ones (issue 11 item 6): the top box stays near its resting
+// place over 5 s from starts 1 um apart, and equal masses are left as they were.
 #include "SceneFixture.h"
 
 #include "Scenes.h"
@@ -9,40 +9,65 @@
 
 #include <algorithm>
 #include <cmath>
+#include <random>
+#include <string>
+#include <vector>
 
 using namespace resolution_test;
 
 namespace {
 
 // A unit box of 1 kg on the floor and one of `ratio` kg on it; returns how far the top box's centre strayed
-// from its resting height (1.5 m) over `seconds`.
-float heavyOnLight(float ratio, int iterations, float seconds) {
+// from its resting height (1.5 m) over `seconds`. Start 0 is the stack as built; each later start moves both
+// boxes up to 1 um in x and z (seeded by the start): the stray is chaotic, and an aligned stack hides it.
+float heavyOnLight(float ratio, int iterations, float seconds, unsigned start) {
     SceneFixture f(iterations);
     f.world->ground();
-    f.world->box(Vector(0, 0.5f, 0), Vector(0.5f, 0.5f, 0.5f), 1.0f);
-    RBDynamics* heavy = f.world->box(Vector(0, 1.5f, 0), Vector(0.5f, 0.5f, 0.5f), ratio)->getDynamics();
+    std::mt19937 rng{start};
+    std::uniform_real_distribution<float> offset(-1e-6f, 1e-6f);
+    const auto jitter = [&] { return start > 0 ? offset(rng) : 0.0f; };
+    const float lightX = jitter(), lightZ = jitter(), heavyX = jitter(), heavyZ = jitter();
+    f.world->box(Vector(lightX, 0.5f, lightZ), Vector(0.5f, 0.5f, 0.5f), 1.0f);
+    RBDynamics* heavy =
+        f.world->box(Vector(heavyX, 1.5f, heavyZ), Vector(0.5f, 0.5f, 0.5f), ratio)->getDynamics();
     float worst = 0;
     f.seconds(seconds, [&] { worst = std::max(worst, (heavy->position - Vector(0, 1.5f, 0)).length()); });
     return worst;
 }
 
+// The strays of `starts` starts, smallest first.
+std::vector<float> strays(float ratio, int iterations, unsigned starts) {
+    std::vector<float> v;
+    for (unsigned start = 0; start < starts; ++start)
+        v.push_back(heavyOnLight(ratio, iterations, 5.0f, start));
+    std::sort(v.begin(), v.end());
+    return v;
+}
+
 } // namespace
 
-TEST(MassRatio, OneTonneOnOneKilogramHoldsAtTheDefaultIterations) {
-    // 1:10^3 at the default 4 iterations: within 5 cm of resting height for 5 s. Before shock propagation
-    // it sank 1.05 m, through the light box; measured after: 3.9 mm. This is the aligned stack only: set 1 um
-    // off, the heavy box walks sideways up to 121 mm (README, Known limits), which no test asserts yet.
-    const float strayed = heavyOnLight(1000.0f, 4, 5.0f);
-    EXPECT_LT(strayed, 0.05f);
-    RecordProperty("strayed_m", std::to_string(strayed));
+// 1:10^3 and 1:10^4 at the default 4 iterations: the heavy box stays within 2 cm of its resting place for
+// 5 s from every one of eight starts, and within 1 cm in the median. Before shock propagation it sank 1.05 m,
+// through the light box. Before the contact's stiffness followed its load (ContactSolver::contactSoftness)
+// the light box gave under the heavy one as a spring of its own mass (69 mm at 1:10^3) and the pair walked
+// sideways: 1:10^3 strayed 4-121 mm over such starts (median 57), 1:10^4 5-203 mm. Measured after: at most
+// 8.4 mm and 6.3 mm.
+TEST(MassRatio, HeavyOnLightHoldsFromEveryStartAtTheDefaultIterations) {
+    for (float ratio : {1000.0f, 10000.0f}) {
+        const std::vector<float> v = strays(ratio, 4, 8);
+        EXPECT_LT(v.back(), 0.02f) << "1:" << ratio << ", the worst start";
+        EXPECT_LT(v[v.size() / 2], 0.01f) << "1:" << ratio << ", the median start";
+        RecordProperty("strayed_m_worst_1_to_" + std::to_string(int(ratio)), std::to_string(v.back()));
+    }
 }
 
 TEST(MassRatio, TenTonnesOnOneKilogramHoldsAtSixteenIterations) {
-    // 1:10^4 at 16 iterations (the README's setting): within 5 cm for 5 s. Measured 1.3 cm (7.8 cm at the
-    // default 4, 3.7 cm at 8); before: 1.0 m at every count up to 64.
-    const float strayed = heavyOnLight(10000.0f, 16, 5.0f);
-    EXPECT_LT(strayed, 0.05f);
-    RecordProperty("strayed_m", std::to_string(strayed));
+    // 1:10^4 at 16 iterations: the median of five starts within 5 cm for 5 s (before: 1.0 m at every count up
+    // to 64 without shock propagation; 8-196 mm over eight starts before the load-following stiffness; 4-107
+    // mm after: more sub-steps hold this pair less well than the default, README Known limits).
+    const std::vector<float> v = strays(10000.0f, 16, 5);
+    EXPECT_LT(v[v.size() / 2], 0.05f);
+    RecordProperty("strayed_m_median", std::to_string(v[v.size() / 2]));
 }
 
 TEST(MassRatio, AnEqualMassPyramidStillFallsAsleep) {
