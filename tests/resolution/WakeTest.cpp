@@ -202,3 +202,15 @@ TEST(Wake, AJointsSettersWakeItsBodies) {
     hinge->Delete();
     spring->Delete();
 }
+
+// A fixed box the game adds overlapping a box asleep on the floor (a wall spawned into it): the sleeper
+// wakes (a new fixed body counts as one that moved: Islands::outsiderMoves) and is pushed out of the wall.
+TEST(Wake, AFixedBodyAddedIntoASleeperWakesIt) {
+    SceneFixture s(4);
+    s.world->ground();
+    iPhysicsFrame* box = s.world->box(Vector(0, 0.5f, 0), Vector(0.5f, 0.5f, 0.5f), 1.0f);
+    ASSERT_TRUE(sleepsWithin(s, box, 3.0f));
+    s.world->fixedBox(Vector(0.8f, 0.5f, 0), Vector(0.5f, 0.5f, 0.5f)); // 0.2 m into the box
+    s.steps(60);
+    EXPECT_LT(box->getDynamics()->position.x, -0.2f + 0.005f) << "pushed out of the wall";
+}
