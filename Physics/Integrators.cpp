@@ -113,24 +113,24 @@ Quat keepRotationalEnergy(const Composite& c, const Quat& qStart, const Quat& q,
     return (q * Quat(shortestArc(b, end).cast<Real>())).normalized();
 }
 
-void explicitEuler(const Composite& c, MotionState& s, Real dt) {
+void explicitEuler(const Composite& c, MotionState& s, Real dt, bool turn) {
     Derivative d = evaluate(c, s, 0);
     s.x += s.v * dt; // the old velocity: this is what makes it "explicit" (and energy-gaining)
     s.v += d.acceleration * dt;
     if (c.rotationLocked) return;
-    s.q = keepRotationalEnergy(c, s.q, rotateBy(s.q, d.omega, dt), s.L);
+    if (turn) s.q = keepRotationalEnergy(c, s.q, rotateBy(s.q, d.omega, dt), s.L);
     s.L += d.torque * dt;
 }
 
-void semiImplicitEuler(const Composite& c, MotionState& s, Real dt) {
+void semiImplicitEuler(const Composite& c, MotionState& s, Real dt, bool turn) {
     Derivative d = evaluate(c, s, 0);
     s.v += d.acceleration * dt; // velocities first ...
     s.L += d.torque * dt;
     s.x += s.v * dt; // ... then positions with the new velocities (symplectic)
-    if (!c.rotationLocked) s.q = keepRotationalEnergy(c, s.q, rotateMidpoint(c, s.q, s.L, dt), s.L);
+    if (!c.rotationLocked && turn) s.q = keepRotationalEnergy(c, s.q, rotateMidpoint(c, s.q, s.L, dt), s.L);
 }
 
-void velocityVerlet(const Composite& c, MotionState& s, Real dt) {
+void velocityVerlet(const Composite& c, MotionState& s, Real dt, bool turn) {
     // Kick-drift-kick. A velocity-dependent force (drag) at the second kick is taken at the half-step
     // velocity, the usual explicit approximation; position-only forces keep the scheme exact to O(dt^2).
     Derivative d0 = evaluate(c, s, 0);
@@ -138,7 +138,7 @@ void velocityVerlet(const Composite& c, MotionState& s, Real dt) {
     s.x += s.v * dt + d0.acceleration * (h * dt);
     s.v += d0.acceleration * h;
     s.L += d0.torque * h;
-    if (!c.rotationLocked) s.q = keepRotationalEnergy(c, s.q, rotateMidpoint(c, s.q, s.L, dt), s.L);
+    if (!c.rotationLocked && turn) s.q = keepRotationalEnergy(c, s.q, rotateMidpoint(c, s.q, s.L, dt), s.L);
     Derivative d1 = evaluate(c, s, dt);
     s.v += d1.acceleration * h;
     s.L += d1.torque * h;
@@ -162,7 +162,7 @@ MotionState stage(const MotionState& s, const MotionState& from, const Derivativ
     return out;
 }
 
-void rungeKutta4(const Composite& c, MotionState& s, Real dt) {
+void rungeKutta4(const Composite& c, MotionState& s, Real dt, bool turn) {
     Real h = 0.5f * dt;
     Derivative k1 = evaluate(c, s, 0);
     MotionState s2 = stage(s, s, k1, h);
@@ -175,7 +175,7 @@ void rungeKutta4(const Composite& c, MotionState& s, Real dt) {
     s.x += (s.v + 2.0f * s2.v + 2.0f * s3.v + s4.v) * w;
     s.v += (k1.acceleration + 2.0f * k2.acceleration + 2.0f * k3.acceleration + k4.acceleration) * w;
     s.L += (k1.torque + 2.0f * k2.torque + 2.0f * k3.torque + k4.torque) * w;
-    if (c.rotationLocked) return; // never turns
+    if (c.rotationLocked || !turn) return; // never turns, or turned by the caller
     // dq/dt = 1/2 (0, w) q, averaged over the four stages.
     Quat sum(0, 0, 0, 0);
     const MotionState* states[] = {&s, &s2, &s3, &s4};
@@ -196,7 +196,15 @@ void rungeKutta4(const Composite& c, MotionState& s, Real dt) {
 
 } // namespace
 
-void integrate(Integrator which, const Composite& c, MotionState& s, Real dt, const Vec3& kinematicOmega) {
+bool rotationIrrelevant(const Composite& c) {
+    if (c.parts.size() != 1 || c.hasGenerators || !c.parts[0].offset.isZero(0)) return false;
+    const Mat3& a = c.invInertia;
+    return a(0, 1) == 0 && a(0, 2) == 0 && a(1, 0) == 0 && a(1, 2) == 0 && a(2, 0) == 0 && a(2, 1) == 0 &&
+           a(0, 0) == a(1, 1) && a(1, 1) == a(2, 2);
+}
+
+void integrate(Integrator which, const Composite& c, MotionState& s, Real dt, const Vec3& kinematicOmega,
+               bool turn) {
     if (c.kinematic) { // immovable by forces: constant velocities, exact for every integrator
         s.x += s.v * dt;
         s.q = rotateBy(s.q, kinematicOmega, dt);
@@ -204,16 +212,16 @@ void integrate(Integrator which, const Composite& c, MotionState& s, Real dt, co
     }
     switch (which) {
     case INTEGRATOR_ExplicitEuler:
-        explicitEuler(c, s, dt);
+        explicitEuler(c, s, dt, turn);
         break;
     case INTEGRATOR_VelocityVerlet:
-        velocityVerlet(c, s, dt);
+        velocityVerlet(c, s, dt, turn);
         break;
     case INTEGRATOR_RK4:
-        rungeKutta4(c, s, dt);
+        rungeKutta4(c, s, dt, turn);
         break;
     default:
-        semiImplicitEuler(c, s, dt);
+        semiImplicitEuler(c, s, dt, turn);
         break;
     }
 }

@@ -20,7 +20,14 @@ struct Derivative {
 Derivative evaluate(const Composite& c, const MotionState& s, Real t);
 
 // Advances s by dt. A kinematic composite moves with constant v and w (omega) whatever the integrator.
-void integrate(Integrator which, const Composite& c, MotionState& s, Real dt, const Vec3& kinematicOmega);
+// turn false leaves the rotation where it was (L still advances): for a body whose velocities do not depend
+// on its rotation, and which something else turns (turnsFreely, PhysicsScene::integrateComposite).
+void integrate(Integrator which, const Composite& c, MotionState& s, Real dt, const Vec3& kinematicOmega,
+               bool turn = true);
+
+// Whether c's rotation changes nothing the forces do to its velocities: one part at the centre of mass, no
+// force generator (they read the orientation), and an inertia the same about every axis (R I^-1 R^T = I^-1).
+bool rotationIrrelevant(const Composite& c);
 
 // q turned by the rotation vector w * dt (exact exponential map, renormalised).
 Quat rotateBy(const Quat& q, const Vec3& omega, Real dt);

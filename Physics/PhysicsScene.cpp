@@ -429,13 +429,15 @@ void PhysicsScene::integrateComposite(RigidBody* body, float dt) {
         Vec3 arm = q * c.rootOffset; // root COM - C, world
         MotionState s{body->statePosition() - arm, body->stateVelocity() - omega.cross(arm), momentum, q};
         const Vec3 v0 = s.v;
-        integrate(m_integrator, c, s, dt, omega);
+        // A body the contact solver moves takes only the change of its velocities from here; when its
+        // rotation changes neither, it is not turned here at all (the solver turns it).
+        const bool solverMoves = body->solverSlot >= 0 && !c.kinematic;
+        integrate(m_integrator, c, s, dt, omega, !(solverMoves && rotationIrrelevant(c)));
         if (c.angularDrag > 0 && !c.kinematic) s.L *= std::exp(-c.angularDrag * dt); // exact decay, any value
         Vec3 omega1 = c.kinematic ? omega : Vec3(worldInverseInertia(c, s.q) * s.L);
         body->forceDv = s.v - v0;
         body->forceDw = omega1 - omega;
-        if (body->solverSlot >= 0 && !c.kinematic) {
-            // The contact solver moves it from where it is: it takes only the velocities' change.
+        if (solverMoves) {
             m_bodyAccess.setMotion(m_solver.body(body->solverSlot), body, c, s.v, omega1, body->forceDv,
                                    body->forceDw);
         } else {
