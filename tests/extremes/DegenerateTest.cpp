@@ -3,6 +3,9 @@
 #include "ExtremesSupport.h"
 
 #include <algorithm>
+#include <random>
+#include <string>
+#include <vector>
 
 using namespace extremes;
 
@@ -36,9 +39,10 @@ TEST(ExtremeDegenerate, ThinSlabsRestAndStack) {
 }
 
 // Spawned overlapping: the solver pushes them apart by projection, not by a velocity that grows with the
-// overlap. Asserted: within 2 s no overlap deeper than 3 cm is left (measured: none for two boxes, 1.6 cm
-// for eight spawned in one place, still settling), and no body ever moves faster than 10 m/s (measured
-// 1.2 m/s at most).
+// overlap. Asserted over five starts (as placed, and four with every box moved up to 1 um in x and z): no
+// body ever moves faster than 10 m/s (measured 1.4 m/s at most) and within 3 s no start leaves an overlap
+// deeper than 1 cm (measured: none for two boxes, 0.3 mm at worst for eight). Eight boxes in one place are
+// chaotic on the way: after 2 s, eight such starts left 1.5-7.0 cm (the start as placed 1.6 cm).
 TEST(ExtremeDegenerate, BodiesSpawnedInsideEachOtherSeparateWithBoundedSpeed) {
     struct Case {
         const char* name;
@@ -47,21 +51,32 @@ TEST(ExtremeDegenerate, BodiesSpawnedInsideEachOtherSeparateWithBoundedSpeed) {
     };
     for (Case c : {Case{"two boxes, half overlapping", 2, 0.5f}, Case{"two boxes, coincident", 2, 0.0f},
                    Case{"eight boxes in one place", 8, 0.01f}}) {
-        Bench b(4);
-        b.world->ground();
-        for (int i = 0; i < c.count; ++i)
-            b.world->box(Vector(c.spacing * float(i), 0.5f, 0.001f * float(i)), Vector(0.5f, 0.5f, 0.5f),
-                         1.0f);
+        std::vector<float> overlaps;
         float fastest = 0;
-        b.steps(120, [&] {
-            for (const iPhysicsFrame* f : b.world->bodies())
-                fastest = std::max(fastest, f->getDynamics()->velocity.length());
-            return true;
-        });
+        for (unsigned start = 0; start < 5; ++start) {
+            Bench b(4);
+            b.world->ground();
+            std::mt19937 rng{start};
+            std::uniform_real_distribution<float> offset(-1e-6f, 1e-6f);
+            const auto jitter = [&] { return start > 0 ? offset(rng) : 0.0f; };
+            for (int i = 0; i < c.count; ++i) {
+                const float x = c.spacing * float(i) + jitter(), z = 0.001f * float(i) + jitter();
+                b.world->box(Vector(x, 0.5f, z), Vector(0.5f, 0.5f, 0.5f), 1.0f);
+            }
+            b.steps(180, [&] {
+                for (const iPhysicsFrame* f : b.world->bodies())
+                    fastest = std::max(fastest, f->getDynamics()->velocity.length());
+                return true;
+            });
+            EXPECT_TRUE(allFinite(*b.world)) << c.name << ", start " << start;
+            overlaps.push_back(b.world->maxPenetration());
+        }
+        std::sort(overlaps.begin(), overlaps.end());
+        const float median = overlaps[overlaps.size() / 2];
         report(std::string(c.name) + ": fastest (m/s)", fastest);
-        report(std::string(c.name) + ": overlap left (m)", b.world->maxPenetration());
-        EXPECT_TRUE(allFinite(*b.world)) << c.name;
+        report(std::string(c.name) + ": overlap left, median of 5 starts (m)", median);
+        report(std::string(c.name) + ": overlap left, worst of 5 starts (m)", overlaps.back());
         EXPECT_LT(fastest, 10.0f) << c.name;
-        EXPECT_LT(b.world->maxPenetration(), 0.03f) << c.name;
+        EXPECT_LT(overlaps.back(), 0.01f) << c.name;
     }
 }
