@@ -335,7 +335,7 @@ private:
     // Shape cast scratch.
     std::vector<CastGeometry> m_cast;
     std::vector<const CollisionGeometry*> m_movingOwner;   // the geometry of each m_moving shape
-    std::vector<std::pair<const void*, int>> m_sweepIndex; // (root dynamics, sweep), sorted
+    std::vector<std::pair<const void*, int>> m_sweepIndex; // (root dynamics, sweep), hashed
     std::vector<int> m_castOrder;                          // m_cast indices grouped by sweep
     std::vector<std::pair<int, int>> m_sweepRange;         // each sweep's range in m_castOrder
     std::vector<gcol::WorldShape> m_moving, m_obstacles;

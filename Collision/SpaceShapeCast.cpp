@@ -26,6 +26,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 
 namespace {
 
@@ -69,14 +70,26 @@ size_t SimpleCollisionSpace::sweepBodies(BodySweep* sweeps, size_t count) {
         return 0;
     }
     if (!sweeps || count == 0) return 0;
-    m_sweepIndex.clear();
+    // Each swept body's root, hashed to its sweep (open addressing, at most half full): every geometry finds
+    // its sweep, if any, in O(1), with nothing sorted.
+    size_t slots = 16;
+    while (slots < 2 * count) slots *= 2;
+    m_sweepIndex.assign(slots, std::make_pair(nullptr, -1));
+    const auto slotOf = [&](const void* root) {
+        std::uint64_t x = std::uint64_t(reinterpret_cast<std::uintptr_t>(root)) * 0x9e3779b97f4a7c15ull;
+        size_t slot = size_t(x >> 32) & (slots - 1);
+        while (m_sweepIndex[slot].first && m_sweepIndex[slot].first != root) slot = (slot + 1) & (slots - 1);
+        return slot;
+    };
     for (size_t i = 0; i < count; ++i) {
         sweeps[i].fraction = 1.0f;
         sweeps[i].hit = nullptr;
         sweeps[i].carried = Vector();
-        if (sweeps[i].body) m_sweepIndex.emplace_back(&sweeps[i].body->getDynamics(), int(i));
+        if (!sweeps[i].body) continue;
+        const void* root = &sweeps[i].body->getDynamics();
+        std::pair<const void*, int>& slot = m_sweepIndex[slotOf(root)];
+        if (!slot.first) slot = std::make_pair(root, int(i)); // the first sweep of a body moves it
     }
-    std::sort(m_sweepIndex.begin(), m_sweepIndex.end());
     // The pairs the last populateContactList found touching at their poses: the contact solve has them.
     m_touchedAtStart.clear();
     for (const Notice& n : m_touching)
@@ -96,10 +109,10 @@ size_t SimpleCollisionSpace::sweepBodies(BodySweep* sweeps, size_t count) {
             if (!c.g->isPlane()) continue;
         } else {
             const void* root = c.g->body()->getDynamics().attachmentRoot();
-            auto it = std::lower_bound(m_sweepIndex.begin(), m_sweepIndex.end(), std::make_pair(root, -1));
-            if (it != m_sweepIndex.end() && it->first == root) {
+            const std::pair<const void*, int>& slot = m_sweepIndex[slotOf(root)];
+            if (slot.first == root) {
                 if (!c.g->currentPose(c.origin, c.rotation)) continue;
-                c.sweep = it->second;
+                c.sweep = slot.second;
                 c.posed = true;
                 ++perSweep[size_t(c.sweep)];
             }
