@@ -144,6 +144,7 @@ void ContactBlocks::unpack(std::vector<Manifold>& manifolds) const {
             p.tangentImpulse[0] = q.impulse[1].lane(m.lane);
             p.tangentImpulse[1] = q.impulse[2].lane(m.lane);
             p.maxNormalImpulse = q.maxNormal.lane(m.lane);
+            p.gap = q.gap.lane(m.lane);
         }
     }
 }

@@ -56,6 +56,7 @@ struct ContactPoint {
     Real forceSpeed = 0;       // what this step's forces added to v_n (a_n dt)
     Real touchSpeed2 = 0;      // v_n^2 at the moment the point touched (the energy a bounce returns)
     Real maxNormalImpulse = 0; // over the sub-steps: a point that never pushed does not bounce
+    Real gap = 0;              // separation at the solve's end (the last relax sweep measured it there)
     bool bounced = false;      // it bounced: it left the surface and is not kept next step
 };
 

@@ -100,8 +100,13 @@ bool ContactSolver::projectDeepOverlaps() {
             const Real allowed = m.bounces ? -m_settings.bounceGap : m_settings.deepOverlap;
             SolverBody &a = m_bodies[m.a], &b = m_bodies[m.b];
             Real excess = 0;
+            // The first pass reads the gaps the last relax sweep measured at these very poses, unless a
+            // projection in it has moved either body since (ContactBlocks::measureGaps: the same arithmetic,
+            // bit for bit with float lanes; a double build's lanes may differ from separation() in the last
+            // bit).
+            const bool measured = iteration == 0 && m.block >= 0 && !a.projected && !b.projected;
             for (int i = 0; i < m.count; ++i) {
-                const Real gap = separation(a, b, m.points[i]);
+                const Real gap = measured ? m.points[i].gap : separation(a, b, m.points[i]);
                 deepest = std::max(deepest, float(-gap));
                 excess = std::max(excess, -gap - allowed);
             }
