@@ -85,32 +85,49 @@ void ContactSolver::applyRestitution() {
 // late find can explain); deeper overlap that was not flown into (bodies spawned inside each other) is left
 // to the push out at its capped speed. Projecting all of it moved bodies of a crowd spawned at one point by
 // 7.8 m in one step.
-bool ContactSolver::projectDeepOverlaps() {
+void ContactSolver::projectDeepOverlaps() {
     for (Manifold& m : m_manifolds) {
         m.projectable = 0;
         for (int i = 0; i < m.count; ++i)
             m.projectable = std::max(m.projectable, -m.points[i].approachSpeed * m_dt);
     }
+    // Each manifold's deepest overlap when it was last measured, and when (a clock that ticks at every
+    // measure and every move); each body's last move. A manifold neither of whose bodies moved since it was
+    // measured has the same gaps: it had nothing to project then and has nothing now, and its deepest holds.
+    m_pairDeepest.assign(m_manifolds.size(), 0.0f);
+    m_pairMeasured.assign(m_manifolds.size(), 0);
+    m_bodyMoved.assign(m_bodies.size(), 0);
+    unsigned clock = 0;
+    const auto movedSince = [&](const Manifold& m, size_t k) {
+        return m_bodyMoved[size_t(m.a)] > m_pairMeasured[k] || m_bodyMoved[size_t(m.b)] > m_pairMeasured[k];
+    };
+    const auto measure = [&](const Manifold& m, size_t k, bool fresh, Real allowed) {
+        // Fresh: nothing has moved since the last relax sweep measured the gaps at these very poses
+        // (ContactBlocks::measureGaps: the same arithmetic, bit for bit with float lanes; a double build's
+        // lanes may differ from separation() in the last bit).
+        const SolverBody &a = m_bodies[size_t(m.a)], &b = m_bodies[size_t(m.b)];
+        const bool measured = fresh && m.block >= 0;
+        float deepest = 0;
+        Real excess = 0;
+        for (int i = 0; i < m.count; ++i) {
+            const Real gap = measured ? m.points[i].gap : separation(a, b, m.points[i]);
+            deepest = std::max(deepest, float(-gap));
+            excess = std::max(excess, -gap - allowed);
+        }
+        m_pairDeepest[k] = deepest;
+        m_pairMeasured[k] = ++clock;
+        return excess;
+    };
     bool moved = true;
-    float deepest = 0; // the overlap left, when a pass moves nothing (ContactSolver::measureOverlap)
     for (int iteration = 0; moved && iteration < kProjectionIterations; ++iteration) {
         moved = false;
-        deepest = 0;
-        for (Manifold& m : m_manifolds) {
+        for (size_t k = 0; k < m_manifolds.size(); ++k) {
+            Manifold& m = m_manifolds[k];
+            if (iteration > 0 && !movedSince(m, k)) continue;
             const Real allowed = m.bounces ? -m_settings.bounceGap : m_settings.deepOverlap;
-            SolverBody &a = m_bodies[m.a], &b = m_bodies[m.b];
-            Real excess = 0;
-            // The first pass reads the gaps the last relax sweep measured at these very poses, unless a
-            // projection in it has moved either body since (ContactBlocks::measureGaps: the same arithmetic,
-            // bit for bit with float lanes; a double build's lanes may differ from separation() in the last
-            // bit).
-            const bool measured = iteration == 0 && m.block >= 0 && !a.projected && !b.projected;
-            for (int i = 0; i < m.count; ++i) {
-                const Real gap = measured ? m.points[i].gap : separation(a, b, m.points[i]);
-                deepest = std::max(deepest, float(-gap));
-                excess = std::max(excess, -gap - allowed);
-            }
-            excess = std::min(excess, m.projectable);
+            SolverBody &a = m_bodies[size_t(m.a)], &b = m_bodies[size_t(m.b)];
+            const bool fresh = m_bodyMoved[size_t(m.a)] == 0 && m_bodyMoved[size_t(m.b)] == 0;
+            const Real excess = std::min(measure(m, k, fresh, allowed), m.projectable);
             Real invMass = a.invMass + b.invMass;
             if (excess <= 0.0f || invMass <= 0.0f) continue;
             m.projectable -= excess;
@@ -124,11 +141,19 @@ bool ContactSolver::projectDeepOverlaps() {
             a.origin -= a.invMass * push;
             b.com += b.invMass * push;
             b.origin += b.invMass * push;
+            ++clock;
+            if (a.invMass > 0.0f) m_bodyMoved[size_t(m.a)] = clock; // the static world never moves
+            if (b.invMass > 0.0f) m_bodyMoved[size_t(m.b)] = clock;
         }
     }
-    // A pass that moved nothing measured every point where the solve leaves it (restitution moves nothing).
-    if (!moved) m_maxDepthAfter = deepest;
-    return !moved;
+    // The overlap left where the solve leaves the bodies (restitution moves nothing): the manifolds moved
+    // since they were measured are measured again.
+    float deepest = 0;
+    for (size_t k = 0; k < m_manifolds.size(); ++k) {
+        if (movedSince(m_manifolds[k], k)) measure(m_manifolds[k], k, false, 0);
+        deepest = std::max(deepest, m_pairDeepest[k]);
+    }
+    m_maxDepthAfter = deepest;
 }
 
 } // namespace physics

@@ -151,13 +151,12 @@ void ContactSolver::solve(Real dt, const SolverBodyAccess& access) {
     }
     m_blocks.unpack(m_manifolds);
     findBounces();
-    const bool measured = projectDeepOverlaps();
+    projectDeepOverlaps();
     applyRestitution();
     for (const SolverBody& b : m_bodies) {
         access.storeVelocity(b);
         if (movable(b)) access.storePose(b);
     }
-    if (!measured) measureOverlap();
     storeImpulses();
 }
 
@@ -299,15 +298,6 @@ void ContactSolver::moveBodies(Real h) {
         }
         turnAndMove(b, h * (b.vSolved + push), h * (b.wSolved + turn));
     }
-}
-
-void ContactSolver::measureOverlap() {
-    m_maxDepthAfter = 0;
-    for (const Manifold& m : m_manifolds)
-        for (int i = 0; i < m.count; ++i) {
-            const ContactPoint& p = m.points[i];
-            m_maxDepthAfter = std::max(m_maxDepthAfter, float(-separation(m_bodies[m.a], m_bodies[m.b], p)));
-        }
 }
 
 void ContactSolver::clear() {

@@ -192,8 +192,7 @@ private:
     static void prepareBounce(const SolverBody& a, const SolverBody& b, ContactPoint& p, Real dt);
     void findBounces();
     void applyRestitution();
-    bool projectDeepOverlaps(); // true when it measured the overlap left too (measureOverlap)
-    void measureOverlap();
+    void projectDeepOverlaps(); // and measures the overlap left (m_maxDepthAfter)
 
     SolverSettings m_settings;
     std::vector<SolverBody> m_bodies;
@@ -212,6 +211,9 @@ private:
     static constexpr int kProjectionIterations = 4;
     static constexpr int kRestitutionSweeps = 8;
     std::vector<std::pair<size_t, int>> m_bouncing; // (manifold, point) of the points that bounce this step
+    // projectDeepOverlaps: each manifold's deepest overlap and when it was measured, each body's last move.
+    std::vector<float> m_pairDeepest;
+    std::vector<unsigned> m_pairMeasured, m_bodyMoved;
     // Shock propagation: each body's contact distance from the immovable world, the manifolds each body is
     // in, and the manifolds between levels, lowest first, with whether b is the upper body.
     std::vector<int> m_level;
