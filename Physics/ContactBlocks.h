@@ -75,6 +75,8 @@ public:
     void setNormalImpulse(const Manifold& m, int point, Real value) {
         at(m).p[point].impulse[0].setLane(m.lane, value);
     }
+    // A manifold's point's gap as the last sweep that measured gaps found it (ContactBlocks::Sweep).
+    Real gap(const Manifold& m, int point) const { return at(m).p[point].gap.lane(m.lane); }
     // The impulses back into the manifolds.
     void unpack(std::vector<Manifold>& manifolds) const;
     size_t blockCount() const { return m_blocks.size(); }

@@ -119,8 +119,10 @@ void ContactSolver::propagateShock(Real h) {
         // On the immovable world the impulse is the ordinary one (momentum is not at stake): it is
         // accumulated, so that friction is bounded by it.
         const bool onWorld = !movable(upperIsB ? a : b);
-        Real gaps[4]; // the pass moves no body: each point's gap holds for both passes
-        for (int i = 0; i < m.count; ++i) gaps[i] = std::max(Real(0), separation(a, b, m.points[i]));
+        // Each point's gap at these poses, as the velocity sweep just used it (nothing has moved since, and
+        // the pass moves no body: it holds for both passes).
+        Real gaps[4];
+        for (int i = 0; i < m.count; ++i) gaps[i] = std::max(Real(0), m_blocks.gap(m, i));
         for (int pass = 0; pass < 2; ++pass) // a box's corners: twice, like the normal passes
             for (int i = 0; i < m.count; ++i) {
                 ContactPoint& p = m.points[i];
