@@ -127,26 +127,6 @@ TEST(Resolution, NewtonsCradlePassesTheMomentumToTheLastBall) {
         EXPECT_LT(balls[i]->getDynamics()->velocity.length(), 0.05f * 2.0f) << "ball " << i;
 }
 
-namespace {
-
-// Moves every body of the world up to 1 um in x and z (a start just apart from the built one).
-void jitterStart(World& world, unsigned seed) {
-    std::mt19937 rng{seed};
-    std::uniform_real_distribution<float> offset(-1e-6f, 1e-6f);
-    for (const iPhysicsFrame* frame : world.bodies()) {
-        RBDynamics* d = const_cast<iPhysicsFrame*>(frame)->getDynamics();
-        d->position.x += offset(rng);
-        d->position.z += offset(rng);
-    }
-}
-
-float medianOfStarts(std::vector<float> v) {
-    std::sort(v.begin(), v.end());
-    return v[v.size() / 2];
-}
-
-} // namespace
-
 // A tower of ten unit boxes stands 10 s: its top moves less than 1 cm and its deepest contact overlaps no
 // more than its soft spring's give. Both are chaotic: started 1 um apart, one build's top at 4 iterations
 // moved 5.0 to 14.8 mm in 10 s and its deepest overlap was 1.1 to 1.7 mm, so a single start passes or fails
