@@ -251,12 +251,13 @@ private:
     float m_maxSpan = 0.0f;            // the largest such sphere's diameter
     bool m_obstaclesIndexed = false;
     // Whether a geometry of the sweep whose geometry is m_castOrder[range] touched obstacle at the last call.
-    bool touchedAtStart(std::pair<int, int> range, const CollisionGeometry* obstacle) const;
+    bool touchedAtStart(std::pair<int, int> range, const CollisionGeometry* obstacle);
     using GeometryPair = std::pair<const CollisionGeometry*, const CollisionGeometry*>; // lower address first
     static GeometryPair pairOf(const CollisionGeometry* a, const CollisionGeometry* b) {
         return a < b ? GeometryPair(a, b) : GeometryPair(b, a);
     }
     std::vector<GeometryPair> m_touchedAtStart; // sorted
+    bool m_touchedAtStartListed = false;        // this sweepBodies call's, once a sweep asked
     // Appends to m_moving the shapes of sweep's geometry with its root at (position, row-vector rotation).
     void castShapesAt(int sweep, const Vector& position, const Matrix& rotation);
 
@@ -342,6 +343,19 @@ private:
     std::vector<int> m_obstacleOwner;    // m_cast index of each obstacle shape
     std::vector<Vector> m_obstacleShift; // how far it moves over the motion (another swept body's)
     std::vector<Vector> m_sweepShift;    // each sweep's translation
+public:
+    struct SweepMotion {    // bounds on a sweep's motion (motionBound)
+        float move = 0.0f;  // how far its COM moves, at most
+        float turn = 0.0f;  // how far it turns (radians), at most
+        float slack = 0.0f; // rounding allowance on a length at its distance from the origin
+        bool exact = true;  // no bound: every geometry of it is tested exactly
+    };
+
+private:
+    static SweepMotion motionBound(const BodySweep& sweep, const RBDynamics& d);
+    static bool mayPassThrough(const SweepMotion& m, CollisionGeometry& g, const RBDynamics& d);
+    std::vector<SweepMotion> m_sweepMotion;
+    std::vector<unsigned char> m_mayPass; // per sweep: some geometry of it may be fast (sweepOne looks)
     struct SweepHit {
         int obstacleSweep = -1; // the sweep moving what it hit, or -1
         float touch = 1.0f;     // the fraction it stops at

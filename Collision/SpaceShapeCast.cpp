@@ -14,9 +14,10 @@
 // kMaxIterations, after which the body is stopped where it is (short of the obstacle: safe, never through). A
 // pair moving apart along its axis without turning (sliding along a floor it hovers over) is never a hit, and
 // a pair the last populateContactList found touching (at its poses) is left to the contact solve.
-// Cost: one pass over the geometry to find the swept bodies' geometry; then, only for a body that moved more
-// than a quarter of a shape's smallest dimension, its shapes against the obstacles in its swept bounds, a few
-// times.
+// Cost: one pass over the geometry to find the swept bodies' geometry, where a bound on each body's motion
+// from its start and end matrices (motionBound: no quaternions, no poses) clears the slow ones; then, only
+// for a body that moved more than a quarter of a shape's smallest dimension, its shapes against the obstacles
+// in its swept bounds, a few times.
 #include "MathEigen.h"
 #include "SimpleCollisionSpace.h"
 #include "iRigidBody.h"
@@ -61,7 +62,41 @@ gcol::WorldShape shifted(gcol::WorldShape s, const Vector& d) {
     return s;
 }
 
+float maxAbs(const Vector& v) { return std::fmax(std::fabs(v.x), std::fmax(std::fabs(v.y), std::fabs(v.z))); }
+
 } // namespace
+
+// An upper bound on how far a sweep's body moves (its COM) and turns (radians) over the motion, from its
+// start and end without quaternions: for rotations R0, R1 an angle theta apart, |R1 - R0| (Frobenius) is 2
+// sqrt(2) sin(theta / 2), and asin(x) <= pi x / 2 on [0, 1], so theta <= pi / (2 sqrt(2)) |R1 - R0|. The
+// margins cover sweepOne's rounding many times over (its quaternions come from the same matrices). exact: no
+// bound (a pose not finite, or so far out that rounding could exceed the margins).
+SimpleCollisionSpace::SweepMotion SimpleCollisionSpace::motionBound(const BodySweep& sweep,
+                                                                    const RBDynamics& d) {
+    SweepMotion m;
+    const float reachOut = std::fmax(maxAbs(sweep.startPosition), maxAbs(d.position));
+    float diff = 0.0f;
+    for (int r = 0; r < 3; ++r)
+        for (int c = 0; c < 3; ++c) {
+            const float e = d.orientation.data()[4 * r + c] - sweep.startOrientation.data()[4 * r + c];
+            diff += e * e;
+        }
+    const float move = (eigen(d.position) - eigen(sweep.startPosition)).norm();
+    m.exact = !(reachOut < 1e30f) || !std::isfinite(diff) || !std::isfinite(move);
+    m.move = move * 1.0001f + 1e-6f * (1.0f + reachOut);
+    m.turn = 1.1108f * std::sqrt(diff) + 1e-3f;
+    m.slack = 1e-6f * (1.0f + reachOut);
+    return m;
+}
+
+// Whether geometry g of d, a body attached to nothing, may move more than a quarter of its smallest dimension
+// over the motion m (sweepOne's test, which it never misses): g's origin is |com| from the COM, so no point
+// of it is farther than |com| + its bounding radius.
+bool SimpleCollisionSpace::mayPassThrough(const SweepMotion& m, CollisionGeometry& g, const RBDynamics& d) {
+    if (m.exact) return true;
+    const float reach = (g.asInterface()->getBoundingRadius() + d.com.length()) * 1.001f + m.slack;
+    return !(m.move + m.turn * reach <= 0.2499f * g.minDimension());
+}
 
 size_t SimpleCollisionSpace::sweepBodies(BodySweep* sweeps, size_t count) {
     settleRemovals();
@@ -81,22 +116,25 @@ size_t SimpleCollisionSpace::sweepBodies(BodySweep* sweeps, size_t count) {
         while (m_sweepIndex[slot].first && m_sweepIndex[slot].first != root) slot = (slot + 1) & (slots - 1);
         return slot;
     };
+    m_sweepMotion.resize(count);
+    m_mayPass.assign(count, 0);
     for (size_t i = 0; i < count; ++i) {
         sweeps[i].fraction = 1.0f;
         sweeps[i].hit = nullptr;
         sweeps[i].carried = Vector();
         if (!sweeps[i].body) continue;
-        const void* root = &sweeps[i].body->getDynamics();
-        std::pair<const void*, int>& slot = m_sweepIndex[slotOf(root)];
-        if (!slot.first) slot = std::make_pair(root, int(i)); // the first sweep of a body moves it
+        const RBDynamics& d = sweeps[i].body->getDynamics();
+        m_sweepMotion[i] = motionBound(sweeps[i], d);
+        std::pair<const void*, int>& slot = m_sweepIndex[slotOf(&d)];
+        if (!slot.first) slot = std::make_pair(&d, int(i)); // the first sweep of a body moves it
     }
-    // The pairs the last populateContactList found touching at their poses: the contact solve has them.
-    m_touchedAtStart.clear();
-    for (const Notice& n : m_touching)
-        if (n.atPose && !n.sensor) m_touchedAtStart.push_back(pairOf(n.g1, n.g2));
-    std::sort(m_touchedAtStart.begin(), m_touchedAtStart.end());
-    // Every geometry that takes part and which sweep (if any) moves it. Poses are read now only for the
-    // swept ones; an obstacle's only when some body turns out fast (most steps: none).
+    // The pairs the last populateContactList found touching at their poses (the contact solve has them):
+    // listed by the first sweep that needs them.
+    m_touchedAtStartListed = false;
+    // Every geometry that takes part and which sweep (if any) moves it. A swept geometry whose body cannot
+    // have moved far enough to pass through anything (the bound below) is not posed now; its sweep is not
+    // looked at unless another of its geometries might be fast. An obstacle is posed only when some body
+    // turns out fast (most steps: none).
     m_cast.clear();
     std::vector<int>& perSweep = m_castOrder; // first used as a count per sweep
     perSweep.assign(count + 1, 0);
@@ -108,17 +146,23 @@ size_t SimpleCollisionSpace::sweepBodies(BodySweep* sweeps, size_t count) {
         if (!c.g->body()) {
             if (!c.g->isPlane()) continue;
         } else {
-            const void* root = c.g->body()->getDynamics().attachmentRoot();
+            const RBDynamics& d = c.g->body()->getDynamics();
+            const void* root = d.attachmentRoot();
             const std::pair<const void*, int>& slot = m_sweepIndex[slotOf(root)];
             if (slot.first == root) {
-                if (!c.g->currentPose(c.origin, c.rotation)) continue;
+                const size_t sweep = size_t(slot.second);
+                if (root != &d || c.g->isPlane() || mayPassThrough(m_sweepMotion[sweep], *c.g, d)) {
+                    if (!c.g->currentPose(c.origin, c.rotation)) continue;
+                    c.posed = true;
+                    m_mayPass[sweep] = 1;
+                }
                 c.sweep = slot.second;
-                c.posed = true;
                 ++perSweep[size_t(c.sweep)];
             }
         }
         m_cast.push_back(c);
     }
+    if (std::find(m_mayPass.begin(), m_mayPass.end(), 1) == m_mayPass.end()) return 0; // nothing fast
     // Each sweep's geometry as one range of m_castOrder (a counting sort, in space order within a sweep).
     m_sweepRange.resize(count);
     int next = 0;
@@ -139,7 +183,7 @@ size_t SimpleCollisionSpace::sweepBodies(BodySweep* sweeps, size_t count) {
     m_sweepHits.assign(count, SweepHit());
     m_obstaclesIndexed = false; // built by the first fast sweep (most calls have none)
     for (size_t i = 0; i < count; ++i) {
-        if (!sweeps[i].body) continue;
+        if (!sweeps[i].body || !m_mayPass[i]) continue;
         sweepOne(sweeps[i], int(i));
         if (sweeps[i].hit) ++hits;
     }
@@ -170,8 +214,14 @@ void SimpleCollisionSpace::castShapesAt(int sweep, const Vector& position, const
     }
 }
 
-bool SimpleCollisionSpace::touchedAtStart(std::pair<int, int> range,
-                                          const CollisionGeometry* obstacle) const {
+bool SimpleCollisionSpace::touchedAtStart(std::pair<int, int> range, const CollisionGeometry* obstacle) {
+    if (!m_touchedAtStartListed) {
+        m_touchedAtStartListed = true;
+        m_touchedAtStart.clear();
+        for (const Notice& n : m_touching)
+            if (n.atPose && !n.sensor) m_touchedAtStart.push_back(pairOf(n.g1, n.g2));
+        std::sort(m_touchedAtStart.begin(), m_touchedAtStart.end());
+    }
     if (m_touchedAtStart.empty()) return false;
     for (int j = range.first; j < range.second; ++j) {
         const CollisionGeometry* mine = m_cast[size_t(m_castOrder[size_t(j)])].g;
@@ -241,6 +291,10 @@ void SimpleCollisionSpace::sweepOne(BodySweep& sweep, int index) {
     bool fast = false;
     const Vec3 dp = p1 - p0;
     const std::pair<int, int> range = m_sweepRange[size_t(index)];
+    for (int j = range.first; j < range.second; ++j) { // the ones sweepBodies' bound left unposed
+        CastGeometry& c = m_cast[size_t(m_castOrder[size_t(j)])];
+        if (!c.posed) c.posed = c.g->currentPose(c.origin, c.rotation); // finite: their body's pose is
+    }
     for (int j = range.first; j < range.second && !fast; ++j) {
         const CastGeometry& c = m_cast[size_t(m_castOrder[size_t(j)])];
         if (c.g->isPlane()) continue;
