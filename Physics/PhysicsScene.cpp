@@ -266,7 +266,7 @@ void PhysicsScene::step(float dt) {
         if (b->asleep() && !b->editedWhileAsleep()) continue;
         b->setAsleep(false); // before the space looks: its pairs are tested again
         b->adoptFrameEdits();
-        if (m_validationOn && b->validate("before a step")) b->snapshotValid(); // valid edits kept on failure
+        if (m_validationOn) b->acceptState("before a step"); // valid edits kept on failure
     }
     if (m_sleeping)
         m_islands.wakeIslandMates(bodies()); // a sleeping island wakes whole, before the space looks
@@ -349,7 +349,7 @@ void PhysicsScene::step(float dt) {
     for (size_t i = 0; m_validationOn && i < bodies().size(); ++i) {
         RigidBody* b = bodies()[i];
         if (b->dying() || b->pendingRemoval || b->asleep()) continue;
-        if (b->validate("after a step")) b->snapshotValid();
+        b->acceptState("after a step");
     }
     {
         RigidBody::PoseCache poses;

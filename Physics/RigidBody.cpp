@@ -203,6 +203,35 @@ bool RigidBody::validate(const char* when) {
     return false;
 }
 
+namespace {
+template <class T> bool sameBits(const T& a, const T& b) { return std::memcmp(&a, &b, sizeof(T)) == 0; }
+
+// Whether d holds, bit for bit, what RBDynamics::operator= copied into v: then checkDynamics (given v's
+// tensors and orientation as the known ones) finds it as it found v, and the copy would change nothing.
+bool sameState(const RBDynamics& d, const RBDynamics& v) {
+    return sameBits(d.position, v.position) && sameBits(d.orientation, v.orientation) &&
+           sameBits(d.velocity, v.velocity) && sameBits(d.angularVelocity, v.angularVelocity) &&
+           sameBits(d.angularMomentum, v.angularMomentum) && sameBits(d.lastVelocity, v.lastVelocity) &&
+           sameBits(d.acceleration, v.acceleration) && sameBits(d.force, v.force) &&
+           sameBits(d.temporalForce, v.temporalForce) && sameBits(d.torque, v.torque) &&
+           sameBits(d.temporalTorque, v.temporalTorque) && sameBits(d.com, v.com) &&
+           sameBits(d.mass, v.mass) && sameBits(d.dragCoefficient, v.dragCoefficient) &&
+           sameBits(d.angularDrag, v.angularDrag) && sameBits(d.restitution, v.restitution) &&
+           sameBits(d.friction, v.friction) && d.physicsType == v.physicsType &&
+           d.isInertiaSetByGame() == v.isInertiaSetByGame() &&
+           sameBits(d.getInertiaTensor(), v.getInertiaTensor()) &&
+           sameBits(d.getInverseInertiaTensor(), v.getInverseInertiaTensor());
+}
+} // namespace
+
+bool RigidBody::acceptState(const char* when) {
+    if (m_lastValidChecked && sameState(m_dyn, m_lastValid)) return true;
+    if (!validate(when)) return false;
+    snapshotValid();
+    m_lastValidChecked = true;
+    return true;
+}
+
 void RigidBody::recordPreviousPose() {
     m_prevPosition = worldPosition();
     m_prevRotation = toQuat(worldOrientation());

@@ -99,7 +99,14 @@ public:
     // Checks the state (cleaning float drift in the orientation); an invalid body is reported with error()
     // and restored to its last valid state. Returns false when it had to restore.
     bool validate(const char* when);
-    void snapshotValid() { m_lastValid = m_dyn; }
+    void snapshotValid() {
+        m_lastValid = m_dyn;
+        m_lastValidChecked = false;
+    }
+    // validate, and on success snapshotValid, as a step does at its start and end; a state that is, bit for
+    // bit, the last one this accepted (a body nothing touched since the last step) is accepted as it is,
+    // without the checks or the copy.
+    bool acceptState(const char* when);
     // Interpolation: the pose at the start of the step, and the frame write after the steps.
     void recordPreviousPose();
     void recordStepPose(); // the pose a step ended with (an edit after it is a teleport)
@@ -212,6 +219,7 @@ private:
 
     RBDynamics m_dyn;
     RBDynamics m_lastValid;
+    bool m_lastValidChecked = false;         // m_lastValid is a state acceptState checked (not just a copy)
     Matrix m_checkedOrientation = Matrix(1); // the last orientation validate() accepted: a clean rotation
     struct Switches {
         bool rotationLocked = false, continuous = true, sleepAllowed = true;

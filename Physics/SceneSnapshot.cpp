@@ -79,6 +79,7 @@ void RigidBody::load(const Saved& s) {
     m_dyn.teleports = s.teleports;
     m_dyn.updateInertia(); // as it was: derived from the same shape and mass
     m_lastValid = s.lastValid;
+    m_lastValidChecked = false; // the next step checks the state in full
     m_prevPosition = s.prevPosition;
     m_stepPosition = s.stepPosition;
     projectedBy = s.projectedBy;

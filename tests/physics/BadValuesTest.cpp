@@ -137,3 +137,60 @@ TEST(BadValues, ANaNTranslationInABoundFrameIsRefusedOnce) {
     EXPECT_TRUE(f->getDynamics()->position.isFinite());
     f->Delete();
 }
+
+// A body nothing touched since the last step is accepted without the checks (RigidBody::acceptState): every
+// property written bad into such a body, one at a time, must still be refused, reported and put back.
+TEST(BadValues, EachPropertyWrittenBadIntoABodyUnchangedSinceTheLastStepIsRefused) {
+    SceneHolder h(60);
+    settingsOf(h.scene)->setSleepingEnabled(false); // (a sleeping body is checked when it wakes)
+    iPhysicsFrame* f = CreatePhysicsFrame();
+    RBDynamics& d = *f->getDynamics();
+    d.physicsType = PHYS_Floating; // at rest, no gravity: a step leaves its state as it was
+    d.position = Vector(1, 2, 3);
+    h.run(100);
+    const float nan = std::numeric_limits<float>::quiet_NaN();
+    struct Edit {
+        const char* name;
+        void (*write)(RBDynamics&, float nan);
+    };
+    const Edit edits[] = {
+        {"position", [](RBDynamics& x, float n) { x.position.y = n; }},
+        {"velocity", [](RBDynamics& x, float n) { x.velocity.z = n; }},
+        {"lastVelocity", [](RBDynamics& x, float n) { x.lastVelocity.x = n; }},
+        {"acceleration", [](RBDynamics& x, float n) { x.acceleration.y = n; }},
+        {"force", [](RBDynamics& x, float n) { x.force.x = n; }},
+        {"temporalForce", [](RBDynamics& x, float n) { x.temporalForce.z = n; }},
+        {"com", [](RBDynamics& x, float n) { x.com.x = n; }},
+        {"angularVelocity", [](RBDynamics& x, float n) { x.angularVelocity.y = n; }},
+        {"torque", [](RBDynamics& x, float n) { x.torque.x = n; }},
+        {"temporalTorque", [](RBDynamics& x, float n) { x.temporalTorque.y = n; }},
+        {"angularMomentum", [](RBDynamics& x, float n) { x.angularMomentum.z = n; }},
+        {"mass", [](RBDynamics& x, float) { x.mass = -1.0f; }},
+        {"dragCoefficient", [](RBDynamics& x, float) { x.dragCoefficient = -1.0f; }},
+        {"angularDrag", [](RBDynamics& x, float n) { x.angularDrag = n; }},
+        {"restitution", [](RBDynamics& x, float) { x.restitution = 50.0f; }},
+        {"friction", [](RBDynamics& x, float) { x.friction = -1.0f; }},
+        {"physicsType", [](RBDynamics& x, float) { x.physicsType = PhysicsType(7); }},
+        {"orientation", [](RBDynamics& x, float) { x.orientation = Matrix(2); }},
+        {"inertia tensor", [](RBDynamics& x, float) { x.getInertiaTensor() = Matrix(-1); }},
+        {"inverse inertia tensor", [](RBDynamics& x, float) { x.getInverseInertiaTensor() = Matrix(-1); }},
+    };
+    for (const Edit& e : edits) {
+        h.run(50); // steps in which nothing changes
+        const float mass = d.mass, restitution = d.restitution;
+        const Vector position = d.position;
+        ErrorRecorder errors;
+        e.write(d, nan);
+        h.run(20); // one step at least
+        EXPECT_EQ(errors.count(), 1u) << e.name;
+        EXPECT_NE(ErrorRecorder::last().find(L"invalid rigid body state"), std::wstring::npos) << e.name;
+        // Put back: the state is the last valid one.
+        EXPECT_EQ(d.mass, mass) << e.name;
+        EXPECT_EQ(d.restitution, restitution) << e.name;
+        EXPECT_EQ(d.position, position) << e.name;
+        EXPECT_EQ(d.physicsType, PHYS_Floating) << e.name;
+        EXPECT_TRUE(d.velocity.isFinite() && d.angularMomentum.isFinite() && d.com.isFinite()) << e.name;
+        EXPECT_TRUE(isRotation(d.orientation, 1e-4f)) << e.name;
+    }
+    f->Delete();
+}
