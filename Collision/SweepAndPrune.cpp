@@ -2,6 +2,15 @@
 #include "SweepAndPrune.h"
 
 #include <algorithm>
+#include <initializer_list>
+#include <limits>
+
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#define GUARDIAN_SSE_SWEEP 1
+#else
+#define GUARDIAN_SSE_SWEEP 0
+#endif
 
 namespace {
 
@@ -73,20 +82,57 @@ Broadphase::PairList SweepAndPrune::findPairs(const std::vector<SimpleCollisionS
     m_out.clear();
     for (int p : m_planes)
         for (int i : m_order) m_out.emplace_back(std::min(p, i), std::max(p, i));
+    sweep();
+    return {m_out.data(), m_out.size()};
+}
+
+// Each box against those after it in the x order whose low x is not past its high x. The boxes' coordinates
+// are laid out one array each, so that four later boxes are compared at once; four boxes whose low x is
+// +infinity close the arrays, so a group of four never reads past them and the last group always ends the
+// sweep. The pairs come out in the order of the one-at-a-time sweep (the fallback without SSE2).
+void SweepAndPrune::sweep() {
     const size_t n = m_sorted.size();
+    for (std::vector<float>* column : {&m_minX, &m_minY, &m_maxY, &m_minZ, &m_maxZ}) column->resize(n + 4);
+    for (size_t k = 0; k < n; ++k) {
+        const gcol::Aabb& b = m_sorted[k];
+        m_minX[k] = b.min.x;
+        m_minY[k] = b.min.y;
+        m_maxY[k] = b.max.y;
+        m_minZ[k] = b.min.z;
+        m_maxZ[k] = b.max.z;
+    }
+    for (size_t k = n; k < n + 4; ++k)
+        m_minX[k] = m_minY[k] = m_maxY[k] = m_minZ[k] = m_maxZ[k] = std::numeric_limits<float>::infinity();
+    auto emit = [this](size_t oi, size_t oj) {
+        m_out.emplace_back(std::min(m_order[oi], m_order[oj]), std::max(m_order[oi], m_order[oj]));
+    };
     for (size_t oi = 0; oi < n; ++oi) {
         const gcol::Aabb& a = m_sorted[oi];
-        for (size_t oj = oi + 1; oj < n; ++oj) {
-            const gcol::Aabb& b = m_sorted[oj];
-            if (b.min.x > a.max.x) break;
-            // One branch, rarely taken, in place of four that go either way.
-            const bool overlap =
-                (b.min.y <= a.max.y) & (a.min.y <= b.max.y) & (b.min.z <= a.max.z) & (a.min.z <= b.max.z);
-            if (overlap)
-                m_out.emplace_back(std::min(m_order[oi], m_order[oj]), std::max(m_order[oi], m_order[oj]));
+#if GUARDIAN_SSE_SWEEP
+        const __m128 highX = _mm_set1_ps(a.max.x), lowY = _mm_set1_ps(a.min.y), highY = _mm_set1_ps(a.max.y),
+                     lowZ = _mm_set1_ps(a.min.z), highZ = _mm_set1_ps(a.max.z);
+        for (size_t oj = oi + 1;; oj += 4) {
+            // The lanes whose low x is past a's high x: from the first such on, every later one is too.
+            const int past = _mm_movemask_ps(_mm_cmpgt_ps(_mm_loadu_ps(&m_minX[oj]), highX));
+            const __m128 y = _mm_and_ps(_mm_cmple_ps(_mm_loadu_ps(&m_minY[oj]), highY),
+                                        _mm_cmple_ps(lowY, _mm_loadu_ps(&m_maxY[oj])));
+            const __m128 z = _mm_and_ps(_mm_cmple_ps(_mm_loadu_ps(&m_minZ[oj]), highZ),
+                                        _mm_cmple_ps(lowZ, _mm_loadu_ps(&m_maxZ[oj])));
+            int hits = _mm_movemask_ps(_mm_and_ps(y, z)) & (past ? (past & -past) - 1 : 0xF);
+            for (int lane = 0; hits; ++lane, hits >>= 1)
+                if (hits & 1) emit(oi, oj + size_t(lane));
+            if (past) break;
         }
+#else
+        for (size_t oj = oi + 1; oj < n; ++oj) {
+            if (m_minX[oj] > a.max.x) break;
+            // One branch, rarely taken, in place of four that go either way.
+            const bool overlap = (m_minY[oj] <= a.max.y) & (a.min.y <= m_maxY[oj]) & (m_minZ[oj] <= a.max.z) &
+                                 (a.min.z <= m_maxZ[oj]);
+            if (overlap) emit(oi, oj);
+        }
+#endif
     }
-    return {m_out.data(), m_out.size()};
 }
 
 void SweepAndPrune::overlapCandidates(const std::vector<CollisionGeometry*>& all, const gcol::Aabb&,

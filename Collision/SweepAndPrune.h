@@ -4,7 +4,8 @@
 //
 // The order is kept between calls: when only some boxes changed, an insertion sort on the previous order
 // brings it up to date (O(n + how far they moved in it)), and the sweep runs over a packed copy of the
-// sorted boxes; when nothing changed, the previous pairs stand as they are. The pairs, and their order (by
+// sorted boxes, a column per coordinate, four later boxes compared at once (SSE2); when nothing changed, the
+// previous pairs stand as they are. The pairs, and their order (by
 // the low x of the first box, ties by entry index, then along the sweep), are those of sorting afresh.
 #pragma once
 
@@ -22,8 +23,10 @@ public:
 
 private:
     void sortAfresh(const std::vector<SimpleCollisionSpace::Entry>& entries);
+    void sweep();                       // m_sorted's overlapping pairs into m_out
     std::vector<int> m_order, m_planes; // active bounded entries by (box.min.x, index); active planes
     std::vector<gcol::Aabb> m_sorted;   // m_order's boxes, in that order
     std::vector<int> m_place;           // each entry's place in m_order (-1: none, -2: a plane)
     std::vector<EntryPair> m_out;
+    std::vector<float> m_minX, m_minY, m_maxY, m_minZ, m_maxZ; // m_sorted's, a column each (sweep)
 };
