@@ -20,10 +20,14 @@ Quat rotateBy(const Quat& q, const Vec3& omega, Real dt) {
     return (Quat(Eigen::AngleAxis<Real>(angle, omega / omega.norm())) * q).normalized();
 }
 
-Derivative evaluate(const Composite& c, const MotionState& s, Real t) {
+Derivative evaluate(const Composite& c, const MotionState& s, Real t, bool withOmega) {
     Derivative d;
     Mat3 r = s.q.toRotationMatrix();
-    d.omega = c.rotationLocked ? Vec3(Vec3::Zero()) : Vec3(r * c.invInertia * r.transpose() * s.L);
+    bool dragged = false; // (a part's drag with dragK 0 is 0 whatever the velocity)
+    for (const CompositePart& p : c.parts) dragged = dragged || (c.drag && p.dragK > 0.0f);
+    const bool omegaUsed = withOmega || dragged || c.hasGenerators;
+    d.omega =
+        c.rotationLocked || !omegaUsed ? Vec3(Vec3::Zero()) : Vec3(r * c.invInertia * r.transpose() * s.L);
     Vec3 force = Vec3::Zero(), torque = Vec3::Zero();
     for (const CompositePart& p : c.parts) {
         Vec3 arm = r * p.offset;
@@ -123,7 +127,7 @@ void explicitEuler(const Composite& c, MotionState& s, Real dt, bool turn) {
 }
 
 void semiImplicitEuler(const Composite& c, MotionState& s, Real dt, bool turn) {
-    Derivative d = evaluate(c, s, 0);
+    Derivative d = evaluate(c, s, 0, false);
     s.v += d.acceleration * dt; // velocities first ...
     s.L += d.torque * dt;
     s.x += s.v * dt; // ... then positions with the new velocities (symplectic)
@@ -133,13 +137,13 @@ void semiImplicitEuler(const Composite& c, MotionState& s, Real dt, bool turn) {
 void velocityVerlet(const Composite& c, MotionState& s, Real dt, bool turn) {
     // Kick-drift-kick. A velocity-dependent force (drag) at the second kick is taken at the half-step
     // velocity, the usual explicit approximation; position-only forces keep the scheme exact to O(dt^2).
-    Derivative d0 = evaluate(c, s, 0);
+    Derivative d0 = evaluate(c, s, 0, false);
     Real h = 0.5f * dt;
     s.x += s.v * dt + d0.acceleration * (h * dt);
     s.v += d0.acceleration * h;
     s.L += d0.torque * h;
     if (!c.rotationLocked && turn) s.q = keepRotationalEnergy(c, s.q, rotateMidpoint(c, s.q, s.L, dt), s.L);
-    Derivative d1 = evaluate(c, s, dt);
+    Derivative d1 = evaluate(c, s, dt, false);
     s.v += d1.acceleration * h;
     s.L += d1.torque * h;
 }

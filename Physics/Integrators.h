@@ -13,11 +13,13 @@ namespace physics {
 struct Derivative {
     Vec3 acceleration; // dv/dt of C
     Vec3 torque;       // dL/dt about C
-    Vec3 omega;        // angular velocity of the state, I_world^-1 L
+    Vec3 omega;        // angular velocity of the state, I_world^-1 L (zero when not asked for and unused)
 };
 
 // Forces of the trial state s at time t (s) into the step: gravity, constant forces, drag and generators.
-Derivative evaluate(const Composite& c, const MotionState& s, Real t);
+// withOmega false: the caller does not read omega, which is then worked out only when the forces need it
+// (drag, generators); the same forces either way.
+Derivative evaluate(const Composite& c, const MotionState& s, Real t, bool withOmega = true);
 
 // Advances s by dt. A kinematic composite moves with constant v and w (omega) whatever the integrator.
 // turn false leaves the rotation where it was (L still advances): for a body whose velocities do not depend

@@ -157,3 +157,35 @@ TEST(IntegratorAccuracy, ExplicitEulerGainsEnergyOnASpring) {
     EXPECT_GT(r.finalEnergyRatio, 2.0f);
     EXPECT_NEAR(r.finalEnergyRatio / expected, 1.0, 0.01);
 }
+
+namespace {
+// A rotational damper: torque = -c w, from the trial state's angular velocity.
+struct Damper final : iForceGenerator {
+    float c;
+    explicit Damper(float coefficient) : c(coefficient) {}
+    void addForces(const iRigidBody*, const RigidBodyState& s, Vector&, Vector& torque) override {
+        torque += s.angularVelocity * -c;
+    }
+};
+} // namespace
+
+// I w' = -c w: w(t) = w0 exp(-c t / I). With I = 0.5 kg m^2 and c = 0.5 N m s, w falls to 1/e in 1 s. The
+// Euler variants give (1 - dt c / I)^60 = 0.3648 at 60 Hz, 0.8 % under e^-1; Verlet and RK4 are closer.
+// A generator that read no angular velocity (or a zero one) would leave the spin as it was.
+TEST(IntegratorAccuracy, AGeneratorReadingTheSpinDampsItAtTheAnalyticRate) {
+    for (Integrator i : {INTEGRATOR_ExplicitEuler, INTEGRATOR_SemiImplicitEuler, INTEGRATOR_VelocityVerlet,
+                         INTEGRATOR_RK4}) {
+        SceneHolder h(60, i);
+        settingsOf(h.scene)->setGravity(Vector());
+        iRigidBody* b = CreateRigidBody(nullptr);
+        RBDynamics& d = b->getDynamics();
+        d.setInertiaTensor(Matrix(0.5f));
+        d.angularVelocity = Vector(0, 2, 0);
+        Damper damper(0.5f);
+        hooksOf(h.scene)->addForceGenerator(b, &damper);
+        h.run(1000);
+        EXPECT_NEAR(d.angularVelocity.y / 2.0f, std::exp(-1.0f), 0.01f) << i;
+        EXPECT_NEAR(d.angularVelocity.x, 0.0f, 1e-6f) << i;
+        hooksOf(h.scene)->removeForceGenerator(b, &damper);
+    }
+}
