@@ -43,6 +43,12 @@ Matrix RigidBody::worldOrientation() const {
 
 void RigidBody::cacheWorldPose() const {
     if (m_poseRound == s_round) return;
+    if (!m_dyn.attachedTo()) { // most bodies: their own pose, no walk
+        m_worldPos = m_dyn.position;
+        m_worldRot = m_dyn.orientation;
+        m_poseRound = s_round;
+        return;
+    }
     // Up to the nearest ancestor already cached (or the root, or a parent outside this scene), then down.
     auto parentBody = [](const RigidBody* b) -> const RigidBody* {
         const RBDynamics* p = b->m_dyn.attachedTo();
