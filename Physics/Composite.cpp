@@ -22,6 +22,21 @@ float dragArea(const RBDynamics& d) {
     return 3.14159265f * r * r;
 }
 
+// d's forces and drag as a part of out at offset from its centre of mass, turned by rotation from the root;
+// locked becomes true when body's rotation is locked.
+void addPart(Composite& out, RigidBody* body, RBDynamics& d, const Vec3& offset, const Mat3& rotation,
+             float lengthUnit, bool& locked) {
+    if (body && !body->generators().empty()) out.hasGenerators = true;
+    locked = locked || (body && body->isRotationLocked());
+    Vec3 force = toEigen(d.force + d.temporalForce);
+    if (d.mass < INFINITE_MASS) force += d.mass * toEigen(d.acceleration);
+    out.parts.push_back(
+        {body, &d, offset, rotation, force, toEigen(d.torque + d.temporalTorque),
+         out.drag && d.dragCoefficient > 0.0f
+             ? 0.5f * AIR_DENSITY / (lengthUnit * lengthUnit * lengthUnit) * dragArea(d) * d.dragCoefficient
+             : 0.0f});
+}
+
 struct Placed {
     RBDynamics* dyn;
     Vec3 position; // part COM relative to the root COM, root axes
@@ -47,6 +62,20 @@ void buildComposite(RigidBody* rootBody, const std::unordered_map<const RBDynami
     out.gravity =
         root->physicsType == PHYS_Falling ? Vec3(gravity * rootBody->getGravityScale()) : Vec3::Zero();
     out.angularDrag = root->angularDrag;
+
+    if (!root->firstAttached()) { // an unattached body: itself, its own tensors (what follows gives the same)
+        out.kinematic = !(root->mass < INFINITE_MASS);
+        out.mass = out.kinematic ? INFINITE_MASS : root->mass;
+        out.invMass = out.kinematic ? Real(0) : Real(1.0 / double(root->mass));
+        out.rootOffset = -Vec3::Zero();
+        out.inertia = tensor(root->getInertiaTensor());
+        out.invInertia = tensor(root->getInverseInertiaTensor());
+        bool locked = false;
+        addPart(out, rootBody, *root, Vec3::Zero(), Mat3::Identity(), lengthUnit, locked);
+        if (locked) out.inertia = out.invInertia = Mat3::Zero();
+        out.rotationLocked = out.invInertia.isZero(0.0f);
+        return;
+    }
 
     // Place every part relative to the root: a child stores its pose relative to its parent's COM and
     // orientation, p_world = R_parent p + P_parent (column form), so the same recursion holds in root axes.
@@ -96,21 +125,12 @@ void buildComposite(RigidBody* rootBody, const std::unordered_map<const RBDynami
 
     bool locked = false; // rotation locked by a part's switch
     for (const Placed& p : placed) {
-        RBDynamics& d = *p.dyn;
         RigidBody* body = rootBody;
         if (p.dyn != root) {
             auto found = bodies.find(p.dyn);
             body = found == bodies.end() ? nullptr : found->second;
         }
-        if (body && !body->generators().empty()) out.hasGenerators = true;
-        locked = locked || (body && body->isRotationLocked());
-        Vec3 force = toEigen(d.force + d.temporalForce);
-        if (d.mass < INFINITE_MASS) force += d.mass * toEigen(d.acceleration);
-        out.parts.push_back(
-            {body, p.dyn, p.position - centre, p.rotation, force, toEigen(d.torque + d.temporalTorque),
-             drag && d.dragCoefficient > 0.0f ? 0.5f * AIR_DENSITY / (lengthUnit * lengthUnit * lengthUnit) *
-                                                    dragArea(d) * d.dragCoefficient
-                                              : 0.0f});
+        addPart(out, body, *p.dyn, p.position - centre, p.rotation, lengthUnit, locked);
     }
     if (locked) out.inertia = out.invInertia = Mat3::Zero(); // as a zero inverse tensor: never turns
     out.rotationLocked = out.invInertia.isZero(0.0f);
