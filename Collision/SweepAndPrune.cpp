@@ -118,10 +118,12 @@ void SweepAndPrune::sweep() {
                                         _mm_cmple_ps(lowY, _mm_loadu_ps(&m_maxY[oj])));
             const __m128 z = _mm_and_ps(_mm_cmple_ps(_mm_loadu_ps(&m_minZ[oj]), highZ),
                                         _mm_cmple_ps(lowZ, _mm_loadu_ps(&m_maxZ[oj])));
-            int hits = _mm_movemask_ps(_mm_and_ps(y, z)) & (past ? (past & -past) - 1 : 0xF);
+            // (A box reaching to +infinity would pass the closing boxes: lanes past the end never count.)
+            const int inside = oj + 4 <= n ? 0xF : (1 << (n - oj)) - 1;
+            int hits = _mm_movemask_ps(_mm_and_ps(y, z)) & (past ? (past & -past) - 1 : 0xF) & inside;
             for (int lane = 0; hits; ++lane, hits >>= 1)
                 if (hits & 1) emit(oi, oj + size_t(lane));
-            if (past) break;
+            if (past || oj + 4 >= n) break;
         }
 #else
         for (size_t oj = oi + 1; oj < n; ++oj) {
