@@ -3,6 +3,8 @@
 #include "ManifoldReduce.h"
 #include "Narrowphase.h"
 
+#include <cmath>
+
 namespace gcol {
 
 int collidePlaneSphere(const PlaneShape& a, const SphereShape& b, ContactManifold& out) {
@@ -21,6 +23,16 @@ int collidePlaneSphere(const PlaneShape& a, const SphereShape& b, ContactManifol
 
 int collidePlaneBox(const PlaneShape& a, const BoxShape& b, ContactManifold& out) {
     out.count = 0;
+    // Most boxes are well above the plane: its lowest corner is the centre's height less the half extents
+    // along the normal, and when that clears the plane by more than the corners' rounding none of them
+    // touches (the loop below would find none).
+    const Vector& h = b.halfExtents;
+    const float lowest = dot(a.normal, b.centre) - a.offset - h.x * std::fabs(dot(a.normal, b.axis[0])) -
+                         h.y * std::fabs(dot(a.normal, b.axis[1])) -
+                         h.z * std::fabs(dot(a.normal, b.axis[2]));
+    const float rounding = 1e-5f * (std::fabs(b.centre.x) + std::fabs(b.centre.y) + std::fabs(b.centre.z) +
+                                    h.x + h.y + h.z + std::fabs(a.offset));
+    if (lowest > rounding) return 0;
     ContactPoint candidates[8];
     int n = 0;
     for (int i = 0; i < 8; ++i) {
