@@ -40,7 +40,7 @@ int clipPolygon(const ClipVertex* in, int n, const Vector& normal, float limit, 
     int m = 0;
     for (int i = 0; i < n; ++i) {
         const ClipVertex& a = in[i];
-        const ClipVertex& b = in[(i + 1) % n];
+        const ClipVertex& b = in[i + 1 < n ? i + 1 : 0]; // (not % n: a division a vertex)
         float da = dot(a.p, normal) - limit, db = dot(b.p, normal) - limit;
         if (da <= 0.0f) out[m++] = a;
         if ((da < 0.0f && db > 0.0f) || (da > 0.0f && db < 0.0f)) {
