@@ -88,8 +88,9 @@ Broadphase::PairList SweepAndPrune::findPairs(const std::vector<SimpleCollisionS
 
 // Each box against those after it in the x order whose low x is not past its high x. The boxes' coordinates
 // are laid out one array each, so that four later boxes are compared at once; four boxes whose low x is
-// +infinity close the arrays, so a group of four never reads past them and the last group always ends the
-// sweep. The pairs come out in the order of the one-at-a-time sweep (the fallback without SSE2).
+// +infinity close the arrays, so a group of four never reads past them and, for a box with a finite high x,
+// the last group always ends the sweep. The pairs come out in the order of the one-at-a-time sweep (the
+// fallback without SSE2, and for a box reaching to infinity).
 void SweepAndPrune::sweep() {
     const size_t n = m_sorted.size();
     for (std::vector<float>* column : {&m_minX, &m_minY, &m_maxY, &m_minZ, &m_maxZ}) column->resize(n + 4);
@@ -109,23 +110,26 @@ void SweepAndPrune::sweep() {
     for (size_t oi = 0; oi < n; ++oi) {
         const gcol::Aabb& a = m_sorted[oi];
 #if GUARDIAN_SSE_SWEEP
-        const __m128 highX = _mm_set1_ps(a.max.x), lowY = _mm_set1_ps(a.min.y), highY = _mm_set1_ps(a.max.y),
-                     lowZ = _mm_set1_ps(a.min.z), highZ = _mm_set1_ps(a.max.z);
-        for (size_t oj = oi + 1;; oj += 4) {
-            // The lanes whose low x is past a's high x: from the first such on, every later one is too.
-            const int past = _mm_movemask_ps(_mm_cmpgt_ps(_mm_loadu_ps(&m_minX[oj]), highX));
-            const __m128 y = _mm_and_ps(_mm_cmple_ps(_mm_loadu_ps(&m_minY[oj]), highY),
-                                        _mm_cmple_ps(lowY, _mm_loadu_ps(&m_maxY[oj])));
-            const __m128 z = _mm_and_ps(_mm_cmple_ps(_mm_loadu_ps(&m_minZ[oj]), highZ),
-                                        _mm_cmple_ps(lowZ, _mm_loadu_ps(&m_maxZ[oj])));
-            // (A box reaching to +infinity would pass the closing boxes: lanes past the end never count.)
-            const int inside = oj + 4 <= n ? 0xF : (1 << (n - oj)) - 1;
-            int hits = _mm_movemask_ps(_mm_and_ps(y, z)) & (past ? (past & -past) - 1 : 0xF) & inside;
-            for (int lane = 0; hits; ++lane, hits >>= 1)
-                if (hits & 1) emit(oi, oj + size_t(lane));
-            if (past || oj + 4 >= n) break;
+        // (Only a box with a finite high x: the closing boxes are then past it, and end the loop.)
+        if (a.max.x < std::numeric_limits<float>::infinity()) {
+            const __m128 highX = _mm_set1_ps(a.max.x), lowY = _mm_set1_ps(a.min.y),
+                         highY = _mm_set1_ps(a.max.y), lowZ = _mm_set1_ps(a.min.z),
+                         highZ = _mm_set1_ps(a.max.z);
+            for (size_t oj = oi + 1;; oj += 4) {
+                // The lanes whose low x is past a's high x: from the first such on, every later one is too.
+                const int past = _mm_movemask_ps(_mm_cmpgt_ps(_mm_loadu_ps(&m_minX[oj]), highX));
+                const __m128 y = _mm_and_ps(_mm_cmple_ps(_mm_loadu_ps(&m_minY[oj]), highY),
+                                            _mm_cmple_ps(lowY, _mm_loadu_ps(&m_maxY[oj])));
+                const __m128 z = _mm_and_ps(_mm_cmple_ps(_mm_loadu_ps(&m_minZ[oj]), highZ),
+                                            _mm_cmple_ps(lowZ, _mm_loadu_ps(&m_maxZ[oj])));
+                int hits = _mm_movemask_ps(_mm_and_ps(y, z)) & (past ? (past & -past) - 1 : 0xF);
+                for (int lane = 0; hits; ++lane, hits >>= 1)
+                    if (hits & 1) emit(oi, oj + size_t(lane));
+                if (past) break;
+            }
+            continue;
         }
-#else
+#endif
         for (size_t oj = oi + 1; oj < n; ++oj) {
             if (m_minX[oj] > a.max.x) break;
             // One branch, rarely taken, in place of four that go either way.
@@ -133,7 +137,6 @@ void SweepAndPrune::sweep() {
                                  (a.min.z <= m_maxZ[oj]);
             if (overlap) emit(oi, oj);
         }
-#endif
     }
 }
 
