@@ -51,7 +51,7 @@ bool isKinematicChain(const RBDynamics& root) {
     return false;
 }
 
-void buildComposite(RigidBody* rootBody, const std::unordered_map<const RBDynamics*, RigidBody*>& bodies,
+void buildComposite(RigidBody* rootBody, const FlatMap<const RBDynamics*, RigidBody*>& bodies,
                     const Vec3& gravity, float lengthUnit, bool drag, Composite& out) {
     RBDynamics* root = &rootBody->getDynamics();
     out.root = root;
@@ -127,8 +127,8 @@ void buildComposite(RigidBody* rootBody, const std::unordered_map<const RBDynami
     for (const Placed& p : placed) {
         RigidBody* body = rootBody;
         if (p.dyn != root) {
-            auto found = bodies.find(p.dyn);
-            body = found == bodies.end() ? nullptr : found->second;
+            RigidBody* const* found = bodies.find(p.dyn);
+            body = found ? *found : nullptr;
         }
         addPart(out, body, *p.dyn, p.position - centre, p.rotation, lengthUnit, locked);
     }

@@ -6,10 +6,10 @@
 // (Eigen): a root rotation R maps local to world, R = M^T for the row-vector orientation M.
 #pragma once
 
+#include "FlatMap.h"
 #include "MathBridge.h"
 #include "RBDynamics.h"
 
-#include <unordered_map>
 #include <vector>
 
 namespace physics {
@@ -52,7 +52,7 @@ struct MotionState {
 // scene's (zero when switched off), scaled by the root's gravity scale; lengthUnit: the world's length units
 // per metre (the drag law's air density and reference area follow it); drag false leaves every part's drag
 // out. A part whose body is rotation-locked (iRigidBodySwitches) gives the composite zero inertia tensors.
-void buildComposite(RigidBody* rootBody, const std::unordered_map<const RBDynamics*, RigidBody*>& bodies,
+void buildComposite(RigidBody* rootBody, const FlatMap<const RBDynamics*, RigidBody*>& bodies,
                     const Vec3& gravity, float lengthUnit, bool drag, Composite& out);
 
 // Whether some part of the chain rooted at root has INFINITE_MASS (forces cannot move it), without building

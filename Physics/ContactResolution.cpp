@@ -12,8 +12,8 @@
 namespace physics {
 
 RigidBody* SceneBodyAccess::bodyOf(const RBDynamics* root) const {
-    auto it = m_bodies.find(root);
-    return it == m_bodies.end() ? nullptr : it->second;
+    RigidBody* const* body = m_bodies.find(root);
+    return body ? *body : nullptr;
 }
 
 SolverBody SceneBodyAccess::enter(RBDynamics* root, int slot) const {
@@ -128,9 +128,9 @@ void Islands::build(const std::vector<RigidBody*>& bodies, const SceneBodyAccess
     auto islandOf = [&](iCollisionGeometry* g) -> int {
         iRigidBody* rb = g ? g->getRigidBody() : nullptr;
         if (!rb) return -1;
-        auto body = byDynamics.find(rb->getDynamics().attachmentRoot());
-        if (body == byDynamics.end()) return -1;
-        const int* index = m_index.find(body->second);
+        RigidBody* const* body = byDynamics.find(rb->getDynamics().attachmentRoot());
+        if (!body) return -1;
+        const int* index = m_index.find(*body);
         return index ? *index : -1;
     };
     m_pushed.assign(m_parent.size(), 0);

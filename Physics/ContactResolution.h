@@ -13,7 +13,6 @@
 #include "ContactSolver.h"
 #include "FlatMap.h"
 
-#include <unordered_map>
 #include <vector>
 
 struct CollisionContact;
@@ -24,7 +23,7 @@ class RigidBody;
 
 class SceneBodyAccess final : public SolverBodyAccess {
 public:
-    using BodyMap = std::unordered_map<const RBDynamics*, RigidBody*>;
+    using BodyMap = FlatMap<const RBDynamics*, RigidBody*>;
     // The scene keeps one (its tables keep their storage from step to step); gravity is set each step.
     explicit SceneBodyAccess(const BodyMap& bodies) : m_bodies(bodies) {}
     void startStep(const Vec3& gravity) {

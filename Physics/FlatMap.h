@@ -1,7 +1,8 @@
 // FlatMap.h - the step's lookup tables (body -> solver index, geometry pair -> manifold, ...): a hash map
 // with open addressing in one array that keeps its storage when cleared, so that a warm scene's step does not
 // touch the heap. clear() is O(1) (a generation stamp). No iteration, so nothing can depend on the order in
-// which the keys' addresses hash.
+// which the keys' addresses hash. A power-of-two table: no division per lookup (std::unordered_map takes the
+// hash modulo a prime).
 #pragma once
 
 #include <cstddef>
@@ -61,6 +62,28 @@ public:
     }
     // The value stored under key, inserted as Value() when absent.
     Value& operator[](const Key& key) { return *emplace(key, Value()).first; }
+
+    // Removes key, if present. The keys after it in its run of used slots move back into the hole unless
+    // their own slot lies between the hole and where they are (backward-shift deletion): every other key is
+    // still found from its slot without gaps, and no tombstones accumulate.
+    bool erase(const Key& key) {
+        if (m_slots.empty()) return false;
+        size_t hole = Hash()(key) & mask();
+        for (;; hole = (hole + 1) & mask()) {
+            if (m_slots[hole].stamp != m_generation) return false;
+            if (m_slots[hole].key == key) break;
+        }
+        for (size_t j = (hole + 1) & mask(); m_slots[j].stamp == m_generation; j = (j + 1) & mask()) {
+            const size_t home = Hash()(m_slots[j].key) & mask();
+            const bool stays = hole <= j ? (hole < home && home <= j) : (hole < home || home <= j);
+            if (stays) continue;
+            m_slots[hole] = m_slots[j];
+            hole = j;
+        }
+        m_slots[hole].stamp = 0; // (never a generation)
+        --m_size;
+        return true;
+    }
 
     void swap(FlatMap& other) noexcept {
         m_slots.swap(other.m_slots);

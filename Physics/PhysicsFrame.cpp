@@ -9,7 +9,6 @@
 #include "iPhysicsFrame.h"
 #include "iUtilities.h"
 
-#include <unordered_map>
 #include <vector>
 
 namespace physics {

@@ -22,7 +22,6 @@
 #include "iSnapshots.h"
 
 #include <cstdint>
-#include <unordered_map>
 #include <vector>
 
 class iCollisionEvents;
@@ -108,8 +107,8 @@ public:
     void forget(RigidBody* b); // b is being destroyed now: drop every reference to it
     // The body of this scene whose dynamics d is, or nullptr.
     RigidBody* bodyOf(const RBDynamics* d) const {
-        auto it = m_byDynamics.find(d);
-        return it == m_byDynamics.end() ? nullptr : it->second;
+        RigidBody* const* body = m_byDynamics.find(d);
+        return body ? *body : nullptr;
     }
 
 private:
@@ -152,7 +151,7 @@ private:
     void closeUpBodies();
     std::vector<RigidBody*> m_bodies; // read through bodies(): it may hold nullptr where a body left
     size_t m_bodyHoles = 0;
-    std::unordered_map<const RBDynamics*, RigidBody*> m_byDynamics;
+    SceneBodyAccess::BodyMap m_byDynamics;
     // What the end of the step does, last queued first: every deferred removal and deletion
     // (SceneLifetime.cpp).
     enum class Leave { Remove, Delete };

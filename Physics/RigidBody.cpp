@@ -12,7 +12,6 @@
 #include <cmath>
 #include <cstring>
 #include <string>
-#include <unordered_map>
 
 namespace physics {
 
