@@ -343,15 +343,12 @@ private:
     std::vector<int> m_obstacleOwner;    // m_cast index of each obstacle shape
     std::vector<Vector> m_obstacleShift; // how far it moves over the motion (another swept body's)
     std::vector<Vector> m_sweepShift;    // each sweep's translation
-public:
-    struct SweepMotion {    // bounds on a sweep's motion (motionBound)
-        float move = 0.0f;  // how far its COM moves, at most
-        float turn = 0.0f;  // how far it turns (radians), at most
-        float slack = 0.0f; // rounding allowance on a length at its distance from the origin
-        bool exact = true;  // no bound: every geometry of it is tested exactly
+    struct SweepMotion {                 // bounds on a sweep's motion (motionBound)
+        float move = 0.0f;               // how far its COM moves, at most
+        float turn = 0.0f;               // how far it turns (radians), at most
+        float slack = 0.0f;              // rounding allowance on a length at its distance from the origin
+        bool exact = true;               // no bound: every geometry of it is tested exactly
     };
-
-private:
     static SweepMotion motionBound(const BodySweep& sweep, const RBDynamics& d);
     static bool mayPassThrough(const SweepMotion& m, CollisionGeometry& g, const RBDynamics& d);
     std::vector<SweepMotion> m_sweepMotion;

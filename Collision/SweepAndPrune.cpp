@@ -132,9 +132,10 @@ void SweepAndPrune::sweep() {
 #endif
         for (size_t oj = oi + 1; oj < n; ++oj) {
             if (m_minX[oj] > a.max.x) break;
+            const gcol::Aabb& b = m_sorted[oj];
             // One branch, rarely taken, in place of four that go either way.
-            const bool overlap = (m_minY[oj] <= a.max.y) & (a.min.y <= m_maxY[oj]) & (m_minZ[oj] <= a.max.z) &
-                                 (a.min.z <= m_maxZ[oj]);
+            const bool overlap =
+                (b.min.y <= a.max.y) & (a.min.y <= b.max.y) & (b.min.z <= a.max.z) & (a.min.z <= b.max.z);
             if (overlap) emit(oi, oj);
         }
     }
