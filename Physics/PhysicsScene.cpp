@@ -267,6 +267,7 @@ void PhysicsScene::step(float dt) {
         b->setAsleep(false); // before the space looks: its pairs are tested again
         b->adoptFrameEdits();
         if (m_validationOn) b->acceptState("before a step"); // valid edits kept on failure
+        b->checkedStep = m_steps;
     }
     if (m_sleeping)
         m_islands.wakeIslandMates(bodies()); // a sleeping island wakes whole, before the space looks
@@ -302,6 +303,14 @@ void PhysicsScene::step(float dt) {
             m_islands.build(bodies(), m_byDynamics, contacts, contactCount);
             joinJointIslands();
         }
+    }
+    // A body that woke after the edits were taken in (touched, with its island, or by the space) is checked
+    // now, before the solver reads it: an impossible value written into a sleeper is refused, never used.
+    for (size_t i = 0; m_validationOn && i < bodies().size(); ++i) {
+        RigidBody* b = bodies()[i];
+        if (b->dying() || b->pendingRemoval || b->asleep() || b->checkedStep == m_steps) continue;
+        b->acceptState("as it woke");
+        b->checkedStep = m_steps;
     }
     m_profiler.lap(&PhysicsProfile::islands);
 

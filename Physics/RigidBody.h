@@ -145,6 +145,7 @@ public:
     float restTime = 0; // seconds spent below the sleep speeds
     // The island it fell asleep with (0: none, or awake): one member woken wakes them all (Islands).
     unsigned sleepIsland = 0;
+    long long checkedStep = -1; // the step whose start last took its state in (validated; PhysicsScene::step)
     // True when the game touched a sleeping body's state since its last step: a velocity, a force or
     // torque, or a new pose. Such a body wakes.
     bool editedWhileAsleep() const;

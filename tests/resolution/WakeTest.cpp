@@ -1,6 +1,7 @@
 // WakeTest.cpp - a sleeping island wakes whole and warm: woken at one body (by the game or by a touch), a
 // resting pyramid stays at rest. Woken a layer a step, each layer started cold under the weight above and
 // the pyramid collapsed in a wave: 84 J of kinetic energy from nothing, 6.6 cm of overlap.
+#include "ErrorRecorder.h"
 #include "SceneFixture.h"
 #include "Scenes.h"
 #include "iBallJoint.h"
@@ -213,4 +214,35 @@ TEST(Wake, AFixedBodyAddedIntoASleeperWakesIt) {
     s.world->fixedBox(Vector(0.8f, 0.5f, 0), Vector(0.5f, 0.5f, 0.5f)); // 0.2 m into the box
     s.steps(60);
     EXPECT_LT(box->getDynamics()->position.x, -0.2f + 0.005f) << "pushed out of the wall";
+}
+
+// A property written bad into a sleeping body is refused before that body takes part in a contact. Here
+// restitution 50 (it does not wake the body): a 1 kg box dropped 0.5 m onto it would leave at 50 times its
+// impact speed (combine rule max). Refused, the pair keeps restitution 0: the box stops on the one below (no
+// rise above its drop height, no speed beyond the impact speed), and the value is reported once and put back.
+TEST(Wake, ABadValueWrittenIntoASleeperIsRefusedBeforeATouchUsesIt) {
+    SceneFixture s(4);
+    s.world->ground();
+    iPhysicsFrame* below = s.world->box(Vector(0, 0.5f, 0), Vector(0.5f, 0.5f, 0.5f), 1.0f);
+    below->getDynamics()->restitution = 0.0f;
+    ASSERT_TRUE(sleepsWithin(s, below, 3.0f));
+    guardian_test::ErrorRecorder errors;
+    below->getDynamics()->restitution = 50.0f;
+    s.steps(1);
+    ASSERT_TRUE(below->getDynamics()->sleeping); // not a motion edit: still asleep
+    iPhysicsFrame* above = s.world->box(Vector(0, 2.0f, 0), Vector(0.5f, 0.5f, 0.5f), 1.0f);
+    above->getDynamics()->restitution = 0.0f;
+    const float impact = std::sqrt(2.0f * 9.81f * 0.5f); // 3.1 m/s
+    float highest = 0.0f, fastest = 0.0f;
+    for (int i = 0; i < 120; ++i) {
+        s.steps(1);
+        highest = std::max(highest, above->getDynamics()->position.y);
+        fastest = std::max(fastest, above->getDynamics()->velocity.length());
+    }
+    EXPECT_EQ(errors.count(), 1u);
+    EXPECT_EQ(below->getDynamics()->restitution, 0.0f);
+    EXPECT_LE(highest, 2.0f + 1e-4f);
+    EXPECT_LT(fastest, impact + 0.2f);
+    EXPECT_NEAR(above->getDynamics()->position.y, 1.5f, 0.02f);
+    EXPECT_NEAR(below->getDynamics()->position.y, 0.5f, 0.02f);
 }
