@@ -73,7 +73,10 @@ iRigidBody* RigidBody::clone() const {
     copy->m_listeners = m_listeners;
     copy->m_generators = m_generators;
     copy->m_switches = m_switches;
-    copy->snapshotValid();
+    // What a failed check puts back is what this body last accepted, not the state copied (a NaN the game
+    // wrote into this body just before would otherwise be put back every step).
+    copy->m_lastValid = m_lastValid;
+    copy->m_lastValidChecked = m_lastValidChecked;
     copy->recordPreviousPose();
     copy->recordStepPose();
     if (m_scene && !m_dying) m_scene->add(copy);

@@ -194,3 +194,22 @@ TEST(BadValues, EachPropertyWrittenBadIntoABodyUnchangedSinceTheLastStepIsRefuse
     }
     f->Delete();
 }
+
+// A clone takes the state it is given; when that state is invalid (a NaN written into the original just
+// before), the clone's next step refuses it like the original's, and puts back the original's last valid
+// state, never the NaN.
+TEST(BadValues, ACloneOfABodyHoldingANaNIsPutBackToAValidState) {
+    SceneHolder h(60);
+    settingsOf(h.scene)->setSleepingEnabled(false);
+    iRigidBody* original = CreateRigidBody(nullptr);
+    original->getDynamics().position = Vector(0, 10, 0);
+    h.run(100);
+    ErrorRecorder errors;
+    original->getDynamics().velocity.x = std::numeric_limits<float>::quiet_NaN();
+    iRigidBody* copy = original->clone();
+    h.run(50);
+    EXPECT_TRUE(original->getDynamics().velocity.isFinite());
+    EXPECT_TRUE(copy->getDynamics().velocity.isFinite());
+    EXPECT_TRUE(copy->getDynamics().position.isFinite());
+    EXPECT_EQ(errors.count(), 2u); // each refused once, then valid
+}
