@@ -156,10 +156,8 @@ void RigidBody::destroy() {
 }
 
 namespace {
-// Bit for bit: a frame holding the same NaN as last time is not a new edit (NaN != NaN).
-bool sameBits(const Matrix& a, const Matrix& b) {
-    return std::memcmp(a.data(), b.data(), 16 * sizeof(float)) == 0;
-}
+// Bit for bit (a frame holding the same NaN as last time is not a new edit: NaN != NaN).
+template <class T> bool sameBits(const T& a, const T& b) { return std::memcmp(&a, &b, sizeof(T)) == 0; }
 } // namespace
 
 void RigidBody::adoptFrameEdits() {
@@ -206,8 +204,6 @@ bool RigidBody::validate(const char* when) {
 }
 
 namespace {
-template <class T> bool sameBits(const T& a, const T& b) { return std::memcmp(&a, &b, sizeof(T)) == 0; }
-
 // Whether d holds, bit for bit, what RBDynamics::operator= copied into v: then checkDynamics (given v's
 // tensors and orientation as the known ones) finds it as it found v, and the copy would change nothing.
 bool sameState(const RBDynamics& d, const RBDynamics& v) {
