@@ -64,6 +64,18 @@ gcol::WorldShape shifted(gcol::WorldShape s, const Vector& d) {
 
 float maxAbs(const Vector& v) { return std::fmax(std::fabs(v.x), std::fmax(std::fabs(v.y), std::fabs(v.z))); }
 
+// The point of a (moving, never a plane) shape farthest along dir: where it first meets what lies that way.
+Vec3 farthestAlong(const gcol::WorldShape& s, const Vec3& dir) {
+    if (s.kind == gcol::ShapeKind::Sphere) return eigen(s.sphere.centre) + s.sphere.radius * dir;
+    Vec3 p = eigen(s.box.centre);
+    const float* h = &s.box.halfExtents.x;
+    for (int k = 0; k < 3; ++k) {
+        const Vec3 u = eigen(s.box.axis[k]);
+        p += (u.dot(dir) < 0.0f ? -h[k] : h[k]) * u;
+    }
+    return p;
+}
+
 } // namespace
 
 // An upper bound on how far a sweep's body moves (its COM) and turns (radians) over the motion, from its
@@ -370,8 +382,20 @@ void SimpleCollisionSpace::sweepOne(BodySweep& sweep, int index) {
                 m_ignored[i * no + j] = 1;
         }
     const float turn = angle * reach; // how far turning can carry any point over the whole motion
+    // How fast (per unit of the motion) moving shape i closes on obstacle j along a at fraction t: its point
+    // facing the obstacle moves with the COM plus the turn about it (slerp turns at the constant rate w).
+    // The COM's motion alone misses an approach carried by the turn (a part on a spinning arm), which then
+    // neither counted as a hit at a touch nor was left overlapping for the contact solve to see.
+    Quat turned = q1 * q0.conjugate();
+    if (turned.w() < 0.0f) turned.coeffs() = -turned.coeffs();
+    const Eigen::AngleAxisf turnAxis(turned);
+    const Vec3 w = turnAxis.angle() * turnAxis.axis();
+    const auto approachOf = [&](size_t i, size_t j, const Vector& a, float at) {
+        const Vec3 arm = farthestAlong(m_moving[i], eigen(a)) - (p0 + dp * at);
+        return dot(vec(dp + w.cross(arm)) - m_obstacleShift[j], a);
+    };
     float t = 0.0f, gap = 0.0f;
-    int hit = -1;
+    int hit = -1, hitMoving = -1;
     Vector axis;
     for (int iteration = 0; hit < 0; ++iteration) {
         float advance = 3.4e38f; // the largest safe step, as a fraction of the motion
@@ -386,7 +410,7 @@ void SimpleCollisionSpace::sweepOne(BodySweep& sweep, int index) {
                 // sliding): contact resolution's. Touching and closing fast (a head-on hit that began at
                 // an exact touch) is a hit at the start.
                 if (iteration == 0 && s <= tolerance &&
-                    (s < 0.0f || dot(vec(dp) - shift, a) <= 0.25f * minDim)) {
+                    (s < 0.0f || approachOf(i, j, a, t) <= 0.25f * minDim)) {
                     m_ignored[i * no + j] = 1;
                     continue;
                 }
@@ -396,6 +420,7 @@ void SimpleCollisionSpace::sweepOne(BodySweep& sweep, int index) {
                 if (!(closing > 0.0f)) continue;
                 if (s <= tolerance) {
                     hit = int(j);
+                    hitMoving = int(i);
                     gap = s;
                     axis = a;
                     break;
@@ -403,6 +428,7 @@ void SimpleCollisionSpace::sweepOne(BodySweep& sweep, int index) {
                 if (s / closing < advance) {
                     advance = s / closing;
                     nearest = int(j);
+                    hitMoving = int(i);
                     gap = s;
                     axis = a;
                 }
@@ -422,7 +448,7 @@ void SimpleCollisionSpace::sweepOne(BodySweep& sweep, int index) {
     }
     // A hair past the touch along the approach, so the pair overlaps by about kSkin; never more than a tenth
     // of the body's smallest dimension further (a grazing approach).
-    const float approach = dot(vec(dp) - m_obstacleShift[size_t(hit)], axis);
+    const float approach = approachOf(size_t(hitMoving), size_t(hit), axis, t);
     float extra = approach > 0.0f ? (gap + skin) / approach : 0.0f;
     extra = std::max(0.0f, std::min(extra, 0.1f * minDim / travel));
     sweep.fraction = std::min(1.0f, t + extra);

@@ -152,7 +152,8 @@ TEST(ShapeCast, AGeometryFarFromItsCentreOfMassIsSweptWhenOnlyTheTurnCarriesIt) 
     // The centre of mass stays at the origin; the 0.05 m sphere sits 2 m from it (com = (-2, 0, 0)) and the
     // body turns 0.2 rad about z, which carries the sphere 0.4 m along an arc through a 1 mm plate at
     // y = 0.2. At both ends the sphere is clear of the plate. It first touches when 2 sin(theta) + 0.05 =
-    // 0.1995; the turn is uniform in angle, so at theta / 0.2 of the motion.
+    // 0.1995; the turn is uniform in angle, so at theta / 0.2 of the motion. It is left overlapping the plate
+    // (the skin, 0.2 mm, so that the next step's contacts see it) but under a quarter of the plate's 1 mm.
     Fixture f;
     UserBody plate(Vector(2, 0.2f, 0), PHYS_FixedInSpace);
     f.shapes.push_back(CreateCOBB(&plate, Vector(0.5f, 0.0005f, 0.5f)));
@@ -164,5 +165,8 @@ TEST(ShapeCast, AGeometryFarFromItsCentreOfMassIsSweptWhenOnlyTheTurnCarriesIt) 
     ASSERT_EQ(s.hit, f.shapes[0]);
     const float reference = std::asin((0.1995f - 0.05f) / 2.0f) / 0.2f;
     EXPECT_GE(s.fraction, reference - 0.0005f); // the touch tolerance (0.1 mm) is 0.00025 of the motion here
-    EXPECT_LE(s.fraction, reference + 0.0005f);
+    EXPECT_LE(s.fraction, reference + 0.001f);
+    const float top = 2.0f * std::sin(0.2f * s.fraction) + 0.05f;
+    EXPECT_GT(top, 0.1995f);
+    EXPECT_LT(top, 0.1995f + 0.00025f);
 }
