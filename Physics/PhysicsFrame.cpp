@@ -73,7 +73,7 @@ public:
         b->getListeners() = m_body->getListeners();
         b->generators() = m_body->generators();
         b->copySwitches(*m_body);
-        b->snapshotValid();
+        b->inheritLastValid(*m_body);
         b->attach(copy); // the frame takes the copied body's pose
         return copy;
     }

@@ -73,10 +73,7 @@ iRigidBody* RigidBody::clone() const {
     copy->m_listeners = m_listeners;
     copy->m_generators = m_generators;
     copy->m_switches = m_switches;
-    // What a failed check puts back is what this body last accepted, not the state copied (a NaN the game
-    // wrote into this body just before would otherwise be put back every step).
-    copy->m_lastValid = m_lastValid;
-    copy->m_lastValidChecked = m_lastValidChecked;
+    copy->inheritLastValid(*this);
     copy->recordPreviousPose();
     copy->recordStepPose();
     if (m_scene && !m_dying) m_scene->add(copy);

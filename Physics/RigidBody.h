@@ -103,6 +103,12 @@ public:
         m_lastValid = m_dyn;
         m_lastValidChecked = false;
     }
+    // A clone's: what a failed check puts back is what `from` last accepted, not the state copied (a NaN the
+    // game wrote into `from` just before would otherwise be put back every step).
+    void inheritLastValid(const RigidBody& from) {
+        m_lastValid = from.m_lastValid;
+        m_lastValidChecked = from.m_lastValidChecked;
+    }
     // validate, and on success snapshotValid, as a step does at its start and end; a state that is, bit for
     // bit, the last one this accepted (a body nothing touched since the last step) is accepted as it is,
     // without the checks or the copy.

@@ -213,3 +213,23 @@ TEST(BadValues, ACloneOfABodyHoldingANaNIsPutBackToAValidState) {
     EXPECT_TRUE(copy->getDynamics().position.isFinite());
     EXPECT_EQ(errors.count(), 2u); // each refused once, then valid
 }
+
+TEST(BadValues, AFramesCloneOfABodyHoldingANaNIsPutBackToAValidState) {
+    // The same through iPhysicsFrame::clone, which places its copy at a new frame.
+    SceneHolder h(60);
+    settingsOf(h.scene)->setSleepingEnabled(false);
+    iPhysicsFrame* original = CreatePhysicsFrame();
+    h.scene->add(original->getRB());
+    original->getDynamics()->position = Vector(0, 10, 0);
+    h.run(100);
+    ErrorRecorder errors;
+    original->getDynamics()->velocity.x = std::numeric_limits<float>::quiet_NaN();
+    iPhysicsFrame* copy = original->clone();
+    h.run(50);
+    EXPECT_TRUE(original->getDynamics()->velocity.isFinite());
+    EXPECT_TRUE(copy->getDynamics()->velocity.isFinite());
+    EXPECT_TRUE(copy->getDynamics()->position.isFinite());
+    EXPECT_EQ(errors.count(), 2u); // each refused once, then valid
+    copy->Delete();
+    original->Delete();
+}
