@@ -283,6 +283,9 @@ bool SimpleCollisionSpace::gatherEntry(Entry& e, bool continuous) {
     const bool movedSinceLastCall = st.hasPrevious && st.previousBody == body && !prevIsPose &&
                                     (st.previousOrigin != e.origin || st.previousRotation != e.rotation);
     e.fixed = resting && !movedSinceLastCall;
+    e.newcomer = !st.hasPrevious || st.previousBody != body;
+    e.asleep = root && root->sleeping;
+    if (e.newcomer && e.fixed) m_restingNewcomer = true;
     // What changed under a sleeping body touching it wakes that body (SpaceWake.cpp). A sleeping body has
     // not moved since it fell asleep (an edit wakes it; what moved it last was its last step), but its
     // shape may have changed; a body the simulator moves touches nothing asleep (its island woke): only what
@@ -391,6 +394,7 @@ void SimpleCollisionSpace::populateContactList(float delta) {
     const Broadphase::PairList pairs = m_broadphase->findPairs(m_entries, m_relaid ? nullptr : &m_changed);
     m_pairs = pairs.first;
     m_pairCount = pairs.count;
+    if (m_restingNewcomer) wakeSleepersUnderNewcomers(pairs.first, pairs.count);
     const float stepDelta = continuous ? delta : 0.0f;
     for (const std::pair<int, int>& p : pairs)
         testPair(m_entries[size_t(p.first)], m_entries[size_t(p.second)], stepDelta);
@@ -474,6 +478,7 @@ void SimpleCollisionSpace::gatherEntries(bool continuous) {
     if (m_layoutDirty) layOutEntries();
     m_changed.clear();
     m_restChanged = false;
+    m_restingNewcomer = false;
     const int n = int(m_entries.size());
     for (int i = 0; i < n; ++i) {
         // The entries are walked in order, but each one's geometry, body and dynamics lie elsewhere: asked

@@ -127,6 +127,8 @@ public:
         bool fixed = false, plane = false, moved = false; // fixed: resting and not moved since last call
         bool sensor = false;
         bool disturbed = false; // moved, reshaped or given another body since the last call
+        bool newcomer = false;  // in the space (with this body) since the last call only
+        bool asleep = false;    // its body (or its root) sleeps
         unsigned teleports = 0; // RBDynamics::teleports of the body and its root
         std::uint32_t layer = 1, mask = ~std::uint32_t(0); // its collision filter (iCollisionFilter.h)
         float motion = 0.0f;   // upper bound on how far any point of it moved since the previous call
@@ -209,6 +211,7 @@ private:
     void forgetEventsOfGone(); // the removed geometry (m_gone) out of the touching and event pairs
     // SpaceWake.cpp: a sleeping body whose support moved, changed or left wakes.
     void wakeDisturbedSleepers();
+    void wakeSleepersUnderNewcomers(const std::pair<int, int>* pairs, size_t count);
     void wakeSleeper(iRigidBody* body, Entry* entry);
     Entry* activeEntryOf(const CollisionGeometry* g); // its entry if it takes part in this call, else nullptr
     void finishNotifications();
@@ -286,9 +289,10 @@ private:
     std::vector<gcol::WorldShape> m_shapes, m_oldShapes;
     std::vector<int> m_changed;
     bool m_relaid = true;
-    bool m_restChanged = false; // this call: something a sleeping body may rest on moved, changed or left
-    bool m_layoutDirty = true;  // members were added or removed, or m_shapes is mostly waste
-    size_t m_shapeWaste = 0;    // shapes in m_shapes no entry owns
+    bool m_restChanged = false;     // this call: something a sleeping body may rest on moved, changed or left
+    bool m_restingNewcomer = false; // this call: a resting geometry (fixed, bodiless) joined the space
+    bool m_layoutDirty = true;      // members were added or removed, or m_shapes is mostly waste
+    size_t m_shapeWaste = 0;        // shapes in m_shapes no entry owns
     // Scratch reused between calls.
     std::vector<gcol::WorldShape> m_newShapes, m_scratchA, m_scratchB;
     const std::pair<int, int>* m_pairs =

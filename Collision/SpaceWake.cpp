@@ -8,7 +8,11 @@
 // both bodies), applied where the space sees it: to the last call's touching pairs (m_touching), before this
 // call's pairs are tested, so that the woken body's pairs are tested in this call. The walk is made only in
 // a call where something that may hold a sleeping body changed (m_restChanged): a resting scene pays nothing.
+// A resting geometry added into a body asleep there before it (a wall, a plane) wakes that body too, before
+// any pair is tested, so the contacts do not depend on the broadphase's order. Bodies added asleep together
+// with what they rest on (a level loaded settled) stay asleep.
 // Only the simulator's bodies sleep; they are woken through iRigidBodyMotion::wake.
+#include "Narrowphase.h"
 #include "RBDynamics.h"
 #include "SimpleCollisionSpace.h"
 #include "iRigidBody.h"
@@ -39,5 +43,25 @@ void SimpleCollisionSpace::wakeDisturbedSleepers() {
         if (aStays && bStays && !a->disturbed && !b->disturbed) continue; // the pair is as it was
         if (aStays) wakeSleeper(a->body, a);
         if (bStays) wakeSleeper(b->body, b);
+    }
+}
+
+void SimpleCollisionSpace::wakeSleepersUnderNewcomers(const std::pair<int, int>* pairs, size_t count) {
+    const auto overlap = [this](const Entry& a, const Entry& b) {
+        for (int i = a.first; i < a.last; ++i)
+            for (int j = b.first; j < b.last; ++j)
+                if (gcol::shapesOverlap(m_shapes[size_t(i)], m_shapes[size_t(j)])) return true;
+        return false;
+    };
+    for (size_t k = 0; k < count; ++k) {
+        Entry& a = m_entries[size_t(pairs[k].first)];
+        Entry& b = m_entries[size_t(pairs[k].second)];
+        if (a.sensor || b.sensor || !layersCollide(a.layer, a.mask, b.layer, b.mask)) continue;
+        Entry* sleeper = a.newcomer && a.fixed && b.asleep && !b.newcomer   ? &b
+                         : b.newcomer && b.fixed && a.asleep && !a.newcomer ? &a
+                                                                            : nullptr;
+        if (sleeper && sleeper->body && sleeper->body->getDynamics().attachmentRoot()->sleeping &&
+            overlap(a, b))
+            wakeSleeper(sleeper->body, sleeper);
     }
 }

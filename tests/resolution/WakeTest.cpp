@@ -5,6 +5,7 @@
 #include "SceneFixture.h"
 #include "Scenes.h"
 #include "iBallJoint.h"
+#include "iCPlane.h"
 #include "iForceGenerator.h"
 #include "iHingeJoint.h"
 #include "iPhysicsSceneHooks.h"
@@ -245,4 +246,16 @@ TEST(Wake, ABadValueWrittenIntoASleeperIsRefusedBeforeATouchUsesIt) {
     EXPECT_LT(fastest, impact + 0.2f);
     EXPECT_NEAR(above->getDynamics()->position.y, 1.5f, 0.02f);
     EXPECT_NEAR(below->getDynamics()->position.y, 0.5f, 0.02f);
+}
+
+TEST(Wake, APlaneAddedIntoASleeperWakesIt) {
+    // As a fixed body does: a bodiless wall plane added 0.2 m into a box asleep on the ground pushes it out.
+    SceneFixture s(4);
+    s.world->ground();
+    iPhysicsFrame* box = s.world->box(Vector(0, 0.5f, 0), Vector(0.5f, 0.5f, 0.5f), 1.0f);
+    ASSERT_TRUE(sleepsWithin(s, box, 3.0f));
+    iCollisionGeometry* wall = CreateCPlane(nullptr, Vector(-1, 0, 0), -0.3f); // solid at x > 0.3
+    s.steps(60);
+    EXPECT_LT(box->getDynamics()->position.x, -0.2f + 0.005f) << "pushed out of the wall";
+    wall->Delete();
 }
