@@ -73,11 +73,12 @@ private:
         const uint64_t ox = uint32_t(x.order), oy = uint32_t(y.order);
         return ox < oy ? Pair{ox << 32 | oy, p, q, -1} : Pair{oy << 32 | ox, q, p, -1};
     }
-    // What the pair list reads of each proxy, packed: its entry's exact box and index, and the call that
-    // last changed that box.
-    struct Exact {
-        gcol::Aabb box;
+    // What the pair list reads of each proxy, packed in two 16-byte rows (one SSE load each): its entry's
+    // exact box (lo, hi) and index, and the call that last changed that box.
+    struct alignas(16) Exact {
+        float lo[3] = {0, 0, 0};
         int entry = -1;
+        float hi[3] = {0, 0, 0};
         unsigned changed = 0;
     };
     // Entry i (active, bounded) of this call: its proxy made or found, its fat box checked, its box noted.
