@@ -7,8 +7,15 @@ namespace physics {
 
 void setFrameWorldPose(iFrame* frame, const Matrix& rotation, const Vector& origin) {
     // With T's rotation set to the identity, the frame's world rotation is its parent's (P).
-    frame->orient(Matrix(1));
+    const Matrix identity(1);
+    frame->orient(identity);
     Matrix parent = frame->rotation();
+    if (parent == identity) { // a root frame (most): R_T is the rotation, d the origin's change
+        frame->orient(rotation);
+        const Vector d = origin - frame->position();
+        frame->translate(d.x, d.y, d.z);
+        return;
+    }
     Matrix parentInverse = parent.transpose(); // a rotation's inverse
     // world rotation = R_T * P, so R_T = rotation * P^T.
     frame->orient(rotation * parentInverse);

@@ -270,7 +270,9 @@ void RigidBody::writeFrame(float alpha) {
     Matrix r = worldOrientation();
     if (alpha < 1.0f) {
         p = m_prevPosition + (p - m_prevPosition) * alpha;
-        r = toOrientation(m_prevRotation.slerp(alpha, toQuat(r)).normalized());
+        // The current rotation as a quaternion: the cached one while the matrix is still the one it made.
+        const bool cached = !m_dyn.attachedTo() && m_dyn.orientation == writtenOrientation;
+        r = toOrientation(m_prevRotation.slerp(alpha, cached ? rotation : toQuat(r)).normalized());
     }
     setFrameWorldPose(m_frame, r, p - r.direction(m_dyn.com));
     m_writtenWorld = m_frame->world();
