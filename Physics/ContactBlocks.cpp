@@ -1,4 +1,4 @@
-// ContactBlocks.cpp - packing manifolds into blocks of four, and the wide sweeps (ContactBlocks.h). The
+// ContactBlocks.cpp - packing manifolds into blocks of kLanes, and the wide sweeps (ContactBlocks.h). The
 // arithmetic per lane is ContactSolver's scalar arithmetic, in the same order.
 #include "ContactBlocks.h"
 #include "SolverRows.h"
@@ -31,18 +31,27 @@ inline void applyRow(const BlockRow& r, const Lanes& ima, const Lanes& imb, cons
 // A block's two bodies' velocities in each lane, from the flat array (V: ContactBlocks::Velocity), and back
 // to where they are stored.
 template <class V> BlockVelocity gatherBlock(const ContactBlock& block, const V* u) {
-    const int *a = block.read[0], *b = block.read[1];
-    return {gatherRows(u[a[0]].v, u[a[1]].v, u[a[2]].v, u[a[3]].v),
-            gatherRows(u[a[0]].w, u[a[1]].w, u[a[2]].w, u[a[3]].w),
-            gatherRows(u[b[0]].v, u[b[1]].v, u[b[2]].v, u[b[3]].v),
-            gatherRows(u[b[0]].w, u[b[1]].w, u[b[2]].w, u[b[3]].w)};
+    const Real *va[kLanes], *wa[kLanes], *vb[kLanes], *wb[kLanes];
+    for (int l = 0; l < kLanes; ++l) {
+        va[l] = u[block.read[0][l]].v;
+        wa[l] = u[block.read[0][l]].w;
+        vb[l] = u[block.read[1][l]].v;
+        wb[l] = u[block.read[1][l]].w;
+    }
+    return {gatherRows(va), gatherRows(wa), gatherRows(vb), gatherRows(wb)};
 }
 template <class V> void scatterBlock(const ContactBlock& block, const BlockVelocity& vel, V* u) {
-    const int *a = block.write[0], *b = block.write[1];
-    scatterRows(vel.va, u[a[0]].v, u[a[1]].v, u[a[2]].v, u[a[3]].v);
-    scatterRows(vel.wa, u[a[0]].w, u[a[1]].w, u[a[2]].w, u[a[3]].w);
-    scatterRows(vel.vb, u[b[0]].v, u[b[1]].v, u[b[2]].v, u[b[3]].v);
-    scatterRows(vel.wb, u[b[0]].w, u[b[1]].w, u[b[2]].w, u[b[3]].w);
+    Real *va[kLanes], *wa[kLanes], *vb[kLanes], *wb[kLanes];
+    for (int l = 0; l < kLanes; ++l) {
+        va[l] = u[block.write[0][l]].v;
+        wa[l] = u[block.write[0][l]].w;
+        vb[l] = u[block.write[1][l]].v;
+        wb[l] = u[block.write[1][l]].w;
+    }
+    scatterRows(vel.va, va);
+    scatterRows(vel.wa, wa);
+    scatterRows(vel.vb, vb);
+    scatterRows(vel.wb, wb);
 }
 
 } // namespace
@@ -183,20 +192,19 @@ void ContactBlocks::loadPoses(const std::vector<SolverBody>& bodies) {
 // Each point's separation at the bodies' poses (separation() in SolverRows.h, lane by lane). The static
 // world's anchors are world points: its pose is the identity.
 void ContactBlocks::measureGaps(ContactBlock& block) const {
-    const Pose *a[kLanes], *b[kLanes];
-    for (int l = 0; l < kLanes; ++l) {
-        a[l] = &m_pose[size_t(std::min(block.read[0][l], int(m_pose.size()) - 1))];
-        b[l] = &m_pose[size_t(std::min(block.read[1][l], int(m_pose.size()) - 1))];
-    }
-    const Lanes3 qa = gatherRows(a[0]->q, a[1]->q, a[2]->q, a[3]->q);
-    const Lanes3 qb = gatherRows(b[0]->q, b[1]->q, b[2]->q, b[3]->q);
+    const Real *qa4[kLanes], *qb4[kLanes], *oa4[kLanes], *ob4[kLanes];
     Lanes qwa, qwb;
     for (int l = 0; l < kLanes; ++l) {
-        qwa.setLane(l, a[l]->q[3]);
-        qwb.setLane(l, b[l]->q[3]);
+        const Pose& a = m_pose[size_t(std::min(block.read[0][l], int(m_pose.size()) - 1))];
+        const Pose& b = m_pose[size_t(std::min(block.read[1][l], int(m_pose.size()) - 1))];
+        qa4[l] = a.q;
+        qb4[l] = b.q;
+        oa4[l] = a.origin;
+        ob4[l] = b.origin;
+        qwa.setLane(l, a.q[3]);
+        qwb.setLane(l, b.q[3]);
     }
-    const Lanes3 oa = gatherRows(a[0]->origin, a[1]->origin, a[2]->origin, a[3]->origin);
-    const Lanes3 ob = gatherRows(b[0]->origin, b[1]->origin, b[2]->origin, b[3]->origin);
+    const Lanes3 qa = gatherRows(qa4), qb = gatherRows(qb4), oa = gatherRows(oa4), ob = gatherRows(ob4);
     for (int i = 0; i < block.points; ++i) {
         BlockPoint& q = block.p[i];
         const Lanes3 pa = rotateLanes(qa, qwa, q.anchorA) + oa, pb = rotateLanes(qb, qwb, q.anchorB) + ob;

@@ -1,7 +1,7 @@
 // ContactBlocks.h - the contact solver's hot loop laid out for the cache and for SIMD: a step's manifolds
-// packed four to a block, one manifold per lane, no two lanes of a block sharing a movable body, their rows
-// in structure-of-arrays form; the bodies' velocities in one flat array, gathered into lanes for a block and
-// scattered back after it (as Box2D v3's and Jolt's solvers do).
+// packed kLanes to a block (four; eight in an AVX build), one manifold per lane, no two lanes of a block
+// sharing a movable body, their rows in structure-of-arrays form; the bodies' velocities in one flat array,
+// gathered into lanes for a block and scattered back after it (as Box2D v3's and Jolt's solvers do).
 //
 // Each lane does what the scalar solve did for its manifold, operation for operation (Lanes.h), and the
 // packing keeps, for every movable body, the order in which its manifolds are solved (pack()): manifolds
@@ -21,7 +21,7 @@
 
 namespace physics {
 
-// One constraint row (the normal, or a tangent) of one point slot across the four lanes.
+// One constraint row (the normal, or a tangent) of one point slot across the lanes.
 struct BlockRow {
     Lanes3 dir, armA, armB, turnA, turnB; // direction, r x direction, I^-1 (r x direction) on each body
     Lanes mass;                           // effective mass along the row
@@ -59,7 +59,7 @@ public:
     void pack(std::vector<Manifold>& manifolds, const std::vector<SolverBody>& bodies);
     // A manifold's soft contact for this step's sub-step (ContactSolver::contactSoftness), set after pack().
     void setSoftness(const Manifold& m, Real biasRate, Real massScale, Real impulseScale);
-    // Every point's rows at the step's start (ContactSolver::prepare, four lanes at a time): the normal and,
+    // Every point's rows at the step's start (ContactSolver::prepare, a block at a time): the normal and,
     // with friction, the two tangents; each point keeps its normal row and approach speed too (restitution,
     // shock propagation).
     void prepare(std::vector<Manifold>& manifolds, const std::vector<SolverBody>& bodies);

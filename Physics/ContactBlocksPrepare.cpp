@@ -1,4 +1,4 @@
-// ContactBlocksPrepare.cpp - each point's rows at the step's start, four lanes at a time
+// ContactBlocksPrepare.cpp - each point's rows at the step's start, a block's lanes at a time
 // (ContactBlocks::prepare), and each manifold's soft contact in its lane.
 #include "ContactBlocks.h"
 #include "SolverRows.h"
@@ -7,7 +7,7 @@ namespace physics {
 
 namespace {
 
-// The rows of 3x3 matrices of four lanes' bodies (a column vector's product, Eigen's order: m0 v0 + (m1 v1 +
+// The rows of 3x3 matrices of the lanes' bodies (a column vector's product, Eigen's order: m0 v0 + (m1 v1 +
 // m2 v2) per row).
 struct Lanes33 {
     Lanes3 row[3];
@@ -39,8 +39,9 @@ void storeLaneTo(const Lanes3& l, int lane, Vec3& out) {
 
 } // namespace
 
-// ContactSolver::prepare's rows, four lanes at a time, the same arithmetic in the same order: r from each
-// centre of mass, r x d, I^-1 (r x d), the effective mass 1 / (1/m_a + 1/m_b + (r_a x d) I_a^-1 (r_a x d) +
+// ContactSolver::prepare's rows, a block's lanes at a time, the same arithmetic in the same order: r from
+// each centre of mass, r x d, I^-1 (r x d), the effective mass 1 / (1/m_a + 1/m_b + (r_a x d) I_a^-1 (r_a x
+// d) +
 // ...), and the approach speed along the normal.
 void ContactBlocks::prepare(std::vector<Manifold>& manifolds, const std::vector<SolverBody>& bodies) {
     static const Mat3 zeroMatrix = Mat3::Zero();

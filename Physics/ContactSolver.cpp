@@ -197,7 +197,7 @@ ContactSolver::Softness ContactSolver::contactSoftness(const Manifold& m, Real h
 }
 
 // Each manifold's soft contact, then every point's rows at the step's start (the normal and, with friction,
-// the two tangents) in the blocks, four lanes at a time (ContactBlocks::prepare).
+// the two tangents) in the blocks, a block at a time (ContactBlocks::prepare).
 void ContactSolver::prepare(Real dt, Real h) {
     m_blocks.prepare(m_manifolds, m_bodies);
     for (Manifold& m : m_manifolds) {
@@ -241,8 +241,9 @@ void ContactSolver::warmStart(bool firstSubstep) {
     m_blocks.warmStart(m_bodies, firstSubstep, -m_settings.restitutionThreshold);
 }
 
-// One sweep over the manifolds, four at a time (ContactBlocks.h). Per manifold: the normal impulses twice,
-// then friction bounded by mu times the normal impulses just found, then the normal impulses again.
+// One sweep over the manifolds, a block (four or eight) at a time (ContactBlocks.h). Per manifold: the normal
+// impulses twice, then friction bounded by mu times the normal impulses just found, then the normal impulses
+// again.
 //  - Friction bounded by a stale normal impulse would take a warm-started impact's worth again in every
 //    sub-step.
 //  - Friction last would leave the stack's normal constraints unmet (at 4 sub-steps the 210-box pyramid never

@@ -1,9 +1,10 @@
-// Lanes.h - four Reals side by side, one per lane, for the contact solver's wide rows (ContactBlocks.h): four
-// manifolds are solved at once, each lane doing exactly the arithmetic the scalar code does for one.
-// With float and SSE2 (every x86-64) a Lanes is one SSE register; otherwise (a double build, another CPU)
-// it is a plain array the compiler may vectorise itself. Either way each lane rounds as the scalar code
-// would: the same operations in the same order, no fused multiply-add. Lanes3 is a vector per lane, with the
-// few vector operations the blocks need, each in Eigen's order.
+// Lanes.h - kLanes Reals side by side, one per lane, for the contact solver's wide rows (ContactBlocks.h):
+// that many manifolds are solved at once, each lane doing exactly the arithmetic the scalar code does for
+// one. With float and SSE2 (every x86-64) a Lanes is one SSE register of four; in a build for AVX (-mavx,
+// GUARDIAN_AVX) one 256-bit register of eight, which halves the solver's instructions per manifold;
+// otherwise (a double build, another CPU) a plain array of four the compiler may vectorise itself. Either way
+// each lane rounds as the scalar code would: the same operations in the same order, no fused multiply-add,
+// so every width gives the same bits (the determinism hashes hold for all three).
 #pragma once
 
 #include "MathBridge.h"
@@ -11,44 +12,71 @@
 #if defined(__SSE2__) && !GUARDIAN_REAL_IS_DOUBLE
 #define GUARDIAN_SSE_LANES 1
 #include <xmmintrin.h>
+#if defined(__AVX__) // a build for AVX (-mavx, -march=native): eight lanes, one 256-bit register
+#define GUARDIAN_AVX_LANES 1
+#include <immintrin.h>
+#else
+#define GUARDIAN_AVX_LANES 0
+#endif
 #else
 #define GUARDIAN_SSE_LANES 0
+#define GUARDIAN_AVX_LANES 0
 #endif
 
 namespace physics {
 
+#if GUARDIAN_AVX_LANES
+constexpr int kLanes = 8;
+#else
 constexpr int kLanes = 4;
+#endif
 
 #if GUARDIAN_SSE_LANES
 
-// Stored as four floats (a lane is read and written in place when rows are packed); the arithmetic loads
+#if GUARDIAN_AVX_LANES
+using LaneRegister = __m256;
+#define GUARDIAN_LANE_OP(name) _mm256_##name
+#else
+using LaneRegister = __m128;
+#define GUARDIAN_LANE_OP(name) _mm_##name
+#endif
+
+// Stored as kLanes floats (a lane is read and written in place when rows are packed); the arithmetic loads
 // them into one register, where the compiler keeps them.
 struct Lanes {
-    alignas(16) float f[4];
-    Lanes() : f{0, 0, 0, 0} {}
-    explicit Lanes(__m128 x) { _mm_store_ps(f, x); }
-    explicit Lanes(float x) : f{x, x, x, x} {}
-    __m128 v() const { return _mm_load_ps(f); }
+    alignas(4 * kLanes) float f[kLanes];
+    Lanes() : f{} {}
+    explicit Lanes(LaneRegister x) { GUARDIAN_LANE_OP(store_ps)(f, x); }
+    explicit Lanes(float x) { GUARDIAN_LANE_OP(store_ps)(f, GUARDIAN_LANE_OP(set1_ps)(x)); }
+    LaneRegister v() const { return GUARDIAN_LANE_OP(load_ps)(f); }
     float lane(int i) const { return f[i]; }
     void setLane(int i, float x) { f[i] = x; }
 };
 // A lane mask: all bits set where a comparison holds.
 using LaneMask = Lanes;
 
-inline Lanes operator+(Lanes a, Lanes b) { return Lanes(_mm_add_ps(a.v(), b.v())); }
-inline Lanes operator-(Lanes a, Lanes b) { return Lanes(_mm_sub_ps(a.v(), b.v())); }
-inline Lanes operator*(Lanes a, Lanes b) { return Lanes(_mm_mul_ps(a.v(), b.v())); }
-inline Lanes operator/(Lanes a, Lanes b) { return Lanes(_mm_div_ps(a.v(), b.v())); }
-inline Lanes operator-(Lanes a) { return Lanes(_mm_xor_ps(a.v(), _mm_set1_ps(-0.0f))); }
+inline Lanes operator+(Lanes a, Lanes b) { return Lanes(GUARDIAN_LANE_OP(add_ps)(a.v(), b.v())); }
+inline Lanes operator-(Lanes a, Lanes b) { return Lanes(GUARDIAN_LANE_OP(sub_ps)(a.v(), b.v())); }
+inline Lanes operator*(Lanes a, Lanes b) { return Lanes(GUARDIAN_LANE_OP(mul_ps)(a.v(), b.v())); }
+inline Lanes operator/(Lanes a, Lanes b) { return Lanes(GUARDIAN_LANE_OP(div_ps)(a.v(), b.v())); }
+inline Lanes operator-(Lanes a) {
+    return Lanes(GUARDIAN_LANE_OP(xor_ps)(a.v(), GUARDIAN_LANE_OP(set1_ps)(-0.0f)));
+}
 // std::max(a, b) lane by lane, the same operand returned on ties.
-inline Lanes maxOf(Lanes a, Lanes b) { return Lanes(_mm_max_ps(b.v(), a.v())); }
+inline Lanes maxOf(Lanes a, Lanes b) { return Lanes(GUARDIAN_LANE_OP(max_ps)(b.v(), a.v())); }
+#if GUARDIAN_AVX_LANES
+inline LaneMask less(Lanes a, Lanes b) { return Lanes(_mm256_cmp_ps(a.v(), b.v(), _CMP_LT_OS)); }
+#else
 inline LaneMask less(Lanes a, Lanes b) { return Lanes(_mm_cmplt_ps(a.v(), b.v())); }
-inline LaneMask andMask(LaneMask a, LaneMask b) { return Lanes(_mm_and_ps(a.v(), b.v())); }
-inline LaneMask orMask(LaneMask a, LaneMask b) { return Lanes(_mm_or_ps(a.v(), b.v())); }
+#endif
+inline LaneMask andMask(LaneMask a, LaneMask b) { return Lanes(GUARDIAN_LANE_OP(and_ps)(a.v(), b.v())); }
+inline LaneMask orMask(LaneMask a, LaneMask b) { return Lanes(GUARDIAN_LANE_OP(or_ps)(a.v(), b.v())); }
 // where ? yes : no, lane by lane.
 inline Lanes select(LaneMask where, Lanes yes, Lanes no) {
-    return Lanes(_mm_or_ps(_mm_and_ps(where.v(), yes.v()), _mm_andnot_ps(where.v(), no.v())));
+    return Lanes(GUARDIAN_LANE_OP(or_ps)(GUARDIAN_LANE_OP(and_ps)(where.v(), yes.v()),
+                                         GUARDIAN_LANE_OP(andnot_ps)(where.v(), no.v())));
 }
+#undef GUARDIAN_LANE_OP
 
 #else
 
@@ -124,24 +152,52 @@ inline Lanes3 rotateLanes(const Lanes3& qv, const Lanes& qw, const Lanes3& v) {
     return (v + qw * uv) + crossLanes(qv, uv);
 }
 
+// kLanes 4-Real rows (x, y, z, 0), one per lane, as three Lanes of x, y and z; and back.
 #if GUARDIAN_SSE_LANES
-// Four 4-Real rows (x, y, z, 0) as three Lanes of x, y and z.
-inline Lanes3 gatherRows(const float* r0, const float* r1, const float* r2, const float* r3) {
-    __m128 a = _mm_load_ps(r0), b = _mm_load_ps(r1), c = _mm_load_ps(r2), d = _mm_load_ps(r3);
+namespace lanes_detail {
+// Four rows as the x, y and z of four lanes (SSE: one 4x4 transpose).
+inline void gather4(const float* const* r, __m128& x, __m128& y, __m128& z) {
+    __m128 a = _mm_load_ps(r[0]), b = _mm_load_ps(r[1]), c = _mm_load_ps(r[2]), d = _mm_load_ps(r[3]);
     _MM_TRANSPOSE4_PS(a, b, c, d);
-    return Lanes3{Lanes(a), Lanes(b), Lanes(c)};
+    x = a;
+    y = b;
+    z = c;
 }
-inline void scatterRows(const Lanes3& l, float* r0, float* r1, float* r2, float* r3) {
-    __m128 a = l.x.v(), b = l.y.v(), c = l.z.v(), d = _mm_setzero_ps();
+inline void scatter4(__m128 a, __m128 b, __m128 c, float* const* r) {
+    __m128 d = _mm_setzero_ps();
     _MM_TRANSPOSE4_PS(a, b, c, d);
-    _mm_store_ps(r0, a);
-    _mm_store_ps(r1, b);
-    _mm_store_ps(r2, c);
-    _mm_store_ps(r3, d);
+    _mm_store_ps(r[0], a);
+    _mm_store_ps(r[1], b);
+    _mm_store_ps(r[2], c);
+    _mm_store_ps(r[3], d);
+}
+} // namespace lanes_detail
+inline Lanes3 gatherRows(const float* const* rows) {
+    __m128 x, y, z;
+    lanes_detail::gather4(rows, x, y, z);
+#if GUARDIAN_AVX_LANES
+    __m128 x1, y1, z1;
+    lanes_detail::gather4(rows + 4, x1, y1, z1);
+    return Lanes3{Lanes(_mm256_insertf128_ps(_mm256_castps128_ps256(x), x1, 1)),
+                  Lanes(_mm256_insertf128_ps(_mm256_castps128_ps256(y), y1, 1)),
+                  Lanes(_mm256_insertf128_ps(_mm256_castps128_ps256(z), z1, 1))};
+#else
+    return Lanes3{Lanes(x), Lanes(y), Lanes(z)};
+#endif
+}
+inline void scatterRows(const Lanes3& l, float* const* rows) {
+#if GUARDIAN_AVX_LANES
+    const __m256 x = l.x.v(), y = l.y.v(), z = l.z.v();
+    lanes_detail::scatter4(_mm256_castps256_ps128(x), _mm256_castps256_ps128(y), _mm256_castps256_ps128(z),
+                           rows);
+    lanes_detail::scatter4(_mm256_extractf128_ps(x, 1), _mm256_extractf128_ps(y, 1),
+                           _mm256_extractf128_ps(z, 1), rows + 4);
+#else
+    lanes_detail::scatter4(l.x.v(), l.y.v(), l.z.v(), rows);
+#endif
 }
 #else
-inline Lanes3 gatherRows(const Real* r0, const Real* r1, const Real* r2, const Real* r3) {
-    const Real* rows[4] = {r0, r1, r2, r3};
+inline Lanes3 gatherRows(const Real* const* rows) {
     Lanes3 l;
     for (int i = 0; i < kLanes; ++i) {
         l.x.v[i] = rows[i][0];
@@ -150,8 +206,7 @@ inline Lanes3 gatherRows(const Real* r0, const Real* r1, const Real* r2, const R
     }
     return l;
 }
-inline void scatterRows(const Lanes3& l, Real* r0, Real* r1, Real* r2, Real* r3) {
-    Real* rows[4] = {r0, r1, r2, r3};
+inline void scatterRows(const Lanes3& l, Real* const* rows) {
     for (int i = 0; i < kLanes; ++i) {
         rows[i][0] = l.x.v[i];
         rows[i][1] = l.y.v[i];
