@@ -222,10 +222,11 @@ private:
     static void onBodyDestroyed(const iRigidBody* dying, void* self);
     void settleDeadBodies(); // the pairs of bodies that died since the last call marked gone
     bool queryShapes(iCollisionGeometry* ig, std::vector<gcol::WorldShape>& out);
-    // SpaceShapeCast.cpp
+    // SpaceShapeCast.cpp (the cast) and SpaceCastObstacles.cpp (what a sweep may meet)
+    static constexpr int kUnusableSweep = -2; // CastGeometry::sweep of a geometry whose pose is not finite
     struct CastGeometry {
         CollisionGeometry* g;
-        int sweep;     // the sweep moving it, or -1 (-2: its pose is not finite)
+        int sweep;     // the sweep moving it, or -1 (kUnusableSweep: its pose is not finite)
         bool posed;    // origin and rotation are read
         Vector origin; // current pose
         Matrix rotation;

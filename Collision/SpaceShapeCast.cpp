@@ -14,6 +14,7 @@
 // kMaxIterations, after which the body is stopped where it is (short of the obstacle: safe, never through). A
 // pair moving apart along its axis without turning (sliding along a floor it hovers over) is never a hit, and
 // a pair the last populateContactList found touching (at its poses) is left to the contact solve.
+// The obstacles a sweep may meet, and the pairs it leaves to the contact solve: SpaceCastObstacles.cpp.
 // Cost: one pass over the geometry to find the swept bodies' geometry, where a bound on each body's motion
 // from its start and end matrices (motionBound: no quaternions, no poses) clears the slow ones; then, only
 // for a body that moved more than a quarter of a shape's smallest dimension, its shapes against the obstacles
@@ -41,7 +42,6 @@ constexpr float kTolerance = 1e-4f; // a gap this small is a touch (and a pair t
 constexpr float kSkin = 2e-4f;      // how far past the touch the body is left, so that contact detection
                                     // sees the pair; under half of the thinnest wall we promise (1 mm)
 constexpr int kMaxIterations = 32;
-constexpr int kUnusable = -2; // a geometry whose body's pose is not finite
 
 Vec3 eigen(const Vector& v) { return Vec3(v.x, v.y, v.z); }
 Vector vec(const Vec3& v) { return Vector(v.x(), v.y(), v.z()); }
@@ -226,72 +226,6 @@ void SimpleCollisionSpace::castShapesAt(int sweep, const Vector& position, const
     }
 }
 
-bool SimpleCollisionSpace::touchedAtStart(std::pair<int, int> range, const CollisionGeometry* obstacle) {
-    if (!m_touchedAtStartListed) {
-        m_touchedAtStartListed = true;
-        m_touchedAtStart.clear();
-        for (const Notice& n : m_touching)
-            if (n.atPose && !n.sensor) m_touchedAtStart.push_back(pairOf(n.g1, n.g2));
-        std::sort(m_touchedAtStart.begin(), m_touchedAtStart.end());
-    }
-    if (m_touchedAtStart.empty()) return false;
-    for (int j = range.first; j < range.second; ++j) {
-        const CollisionGeometry* mine = m_cast[size_t(m_castOrder[size_t(j)])].g;
-        if (std::binary_search(m_touchedAtStart.begin(), m_touchedAtStart.end(), pairOf(mine, obstacle)))
-            return true;
-    }
-    return false;
-}
-
-void SimpleCollisionSpace::indexObstacles() {
-    m_obstaclesIndexed = true;
-    m_byLowX.clear();
-    m_unbounded.clear();
-    m_maxSpan = 0.0f;
-    for (size_t j = 0; j < m_cast.size(); ++j) {
-        CastGeometry& c = m_cast[j];
-        if (!c.posed) {
-            c.posed = true;
-            if (!c.g->currentPose(c.origin, c.rotation)) c.sweep = kUnusable;
-        }
-        if (c.sweep == kUnusable) continue;
-        // Another swept body's geometry moves from its start (current pose - shift) to its current pose; so
-        // does any other that moved since the contacts were found (a kinematic paddle, a slower body): held
-        // at its end pose, a paddle chasing a ball it just sent off stood in the ball's path.
-        const CollisionGeometry::SpaceState& st = c.g->spaceState();
-        c.shift = c.sweep >= 0                                       ? m_sweepShift[size_t(c.sweep)]
-                  : st.hasPrevious && st.previousBody == c.g->body() ? c.origin - st.previousOrigin
-                                                                     : Vector();
-        // The sphere around it over its motion (sweepOne tests the same one against a body's swept bounds).
-        const float r = c.g->asInterface()->getBoundingRadius() + 0.5f * c.shift.length();
-        const float lowX = c.origin.x - 0.5f * c.shift.x - r;
-        if (c.g->isPlane() || !std::isfinite(lowX) || !std::isfinite(r)) {
-            m_unbounded.push_back(int(j));
-            continue;
-        }
-        m_byLowX.push_back({lowX, int(j), c.origin.y - 0.5f * c.shift.y, c.origin.z - 0.5f * c.shift.z, r});
-        m_maxSpan = std::max(m_maxSpan, 2.0f * r);
-    }
-    std::sort(m_byLowX.begin(), m_byLowX.end());
-}
-
-// Every geometry whose sphere can reach [lo, hi], and the unbounded ones, in m_cast order (the order a pass
-// over all would meet them: ties in the time of impact resolve the same way). The x order narrows the search
-// to a slab; y and z drop most of the slab (in a pile of 4,000 boxes the slab held a quarter of them, sorted
-// for every fast body). The test is looser than sweepOne's exact sphere test by a rounding margin, so it
-// never drops a sphere that test keeps.
-void SimpleCollisionSpace::gatherCandidates(const Vector& lo, const Vector& hi) {
-    m_castCandidates.assign(m_unbounded.begin(), m_unbounded.end());
-    auto it =
-        std::lower_bound(m_byLowX.begin(), m_byLowX.end(), ObstacleSphere{lo.x - m_maxSpan, -1, 0, 0, 0});
-    for (; it != m_byLowX.end() && it->lowX <= hi.x; ++it) {
-        const float r = it->r * 1.001f + 1e-6f * m_lengthUnit;
-        if (it->y + r < lo.y || it->y - r > hi.y || it->z + r < lo.z || it->z - r > hi.z) continue;
-        m_castCandidates.push_back(it->cast);
-    }
-    std::sort(m_castCandidates.begin(), m_castCandidates.end());
-}
-
 void SimpleCollisionSpace::sweepOne(BodySweep& sweep, int index) {
     const float tolerance = kTolerance * m_lengthUnit, skin = kSkin * m_lengthUnit;
     const RBDynamics& d = sweep.body->getDynamics();
@@ -344,7 +278,7 @@ void SimpleCollisionSpace::sweepOne(BodySweep& sweep, int index) {
         // A pair found touching when the contacts were found is the contact solve's: the straight-line path
         // (COM linear, orientation slerp) of a body turning about a touch cuts into the surface, and a domino
         // leaning on the next one was put back every step.
-        if (c.sweep == index || c.sweep == kUnusable || c.g->isSensor() || touchedAtStart(range, c.g))
+        if (c.sweep == index || c.sweep == kUnusableSweep || c.g->isSensor() || touchedAtStart(range, c.g))
             continue;
         const Vector& shift = c.shift;
         const Vec3 half = 0.5f * eigen(shift);
