@@ -84,6 +84,16 @@ inline Vector boxCorner(const BoxShape& b, int i) {
                                 i & 4 ? b.halfExtents.z : -b.halfExtents.z));
 }
 
+// The point of a sphere or box farthest along dir (its support point: where it first meets what lies that
+// way). Not for a plane (unbounded).
+inline Vector supportPoint(const WorldShape& s, const Vector& dir) {
+    if (s.kind == ShapeKind::Sphere) return s.sphere.centre + dir * s.sphere.radius;
+    const BoxShape& b = s.box;
+    return boxToWorld(b, Vector(dot(b.axis[0], dir) < 0.0f ? -b.halfExtents.x : b.halfExtents.x,
+                                dot(b.axis[1], dir) < 0.0f ? -b.halfExtents.y : b.halfExtents.y,
+                                dot(b.axis[2], dir) < 0.0f ? -b.halfExtents.z : b.halfExtents.z));
+}
+
 // Bounds of a shape; a plane has none (infinite) and returns false.
 bool shapeAabb(const WorldShape& s, Aabb& out);
 // The interval a shape covers along a unit axis (a plane: the whole line unless the axis is its normal).

@@ -64,18 +64,6 @@ gcol::WorldShape shifted(gcol::WorldShape s, const Vector& d) {
 
 float maxAbs(const Vector& v) { return std::fmax(std::fabs(v.x), std::fmax(std::fabs(v.y), std::fabs(v.z))); }
 
-// The point of a (moving, never a plane) shape farthest along dir: where it first meets what lies that way.
-Vec3 farthestAlong(const gcol::WorldShape& s, const Vec3& dir) {
-    if (s.kind == gcol::ShapeKind::Sphere) return eigen(s.sphere.centre) + s.sphere.radius * dir;
-    Vec3 p = eigen(s.box.centre);
-    const float* h = &s.box.halfExtents.x;
-    for (int k = 0; k < 3; ++k) {
-        const Vec3 u = eigen(s.box.axis[k]);
-        p += (u.dot(dir) < 0.0f ? -h[k] : h[k]) * u;
-    }
-    return p;
-}
-
 } // namespace
 
 // An upper bound on how far a sweep's body moves (its COM) and turns (radians) over the motion, from its
@@ -325,7 +313,7 @@ void SimpleCollisionSpace::sweepOne(BodySweep& sweep, int index) {
     const Eigen::AngleAxisf turnAxis(turned);
     const Vec3 w = turnAxis.angle() * turnAxis.axis();
     const auto approachOf = [&](size_t i, size_t j, const Vector& a, float at) {
-        const Vec3 arm = farthestAlong(m_moving[i], eigen(a)) - (p0 + dp * at);
+        const Vec3 arm = eigen(gcol::supportPoint(m_moving[i], a)) - (p0 + dp * at);
         return dot(vec(dp + w.cross(arm)) - m_obstacleShift[j], a);
     };
     float t = 0.0f, gap = 0.0f;

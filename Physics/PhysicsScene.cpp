@@ -420,7 +420,7 @@ void PhysicsScene::integrateComposite(RigidBody* body, float dt) {
                    m_dragOn, c);
     if (d.physicsType != PHYS_FixedInSpace) {
         // The cached quaternion is exact; the matrix is only re-read when the game replaced it.
-        Quat q = d.orientation == body->writtenOrientation ? body->rotation : toQuat(d.orientation);
+        Quat q = body->ownRotation();
         // Angular velocity and momentum are one state: take the one the game changed (w wins if both); if
         // neither changed but the mass distribution did (attach, detach, new tensor), keep w.
         // The body's own state (its Real values, or the fields the game wrote: RigidBody::OwnState).

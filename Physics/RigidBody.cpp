@@ -234,7 +234,7 @@ void RigidBody::recordPreviousPose() {
     // rotation stays the float matrix's, as the determinism hashes were recorded with).
     const bool root = !m_dyn.attachedTo();
     m_startPosition = root ? statePosition() : toEigen(m_prevPosition);
-    if (GUARDIAN_REAL_IS_DOUBLE && root && m_dyn.orientation == writtenOrientation) m_prevRotation = rotation;
+    if (GUARDIAN_REAL_IS_DOUBLE && root) m_prevRotation = ownRotation();
     projectedBy = Vector();
 }
 
@@ -270,9 +270,8 @@ void RigidBody::writeFrame(float alpha) {
     Matrix r = worldOrientation();
     if (alpha < 1.0f) {
         p = m_prevPosition + (p - m_prevPosition) * alpha;
-        // The current rotation as a quaternion: the cached one while the matrix is still the one it made.
-        const bool cached = !m_dyn.attachedTo() && m_dyn.orientation == writtenOrientation;
-        r = toOrientation(m_prevRotation.slerp(alpha, cached ? rotation : toQuat(r)).normalized());
+        const Quat now = m_dyn.attachedTo() ? toQuat(r) : ownRotation(); // a root's world rotation is its own
+        r = toOrientation(m_prevRotation.slerp(alpha, now).normalized());
     }
     setFrameWorldPose(m_frame, r, p - r.direction(m_dyn.com));
     m_writtenWorld = m_frame->world();

@@ -187,6 +187,11 @@ public:
     const Vec3& startPosition() const { return m_startPosition; }
     Matrix writtenOrientation = Matrix(1);
     Quat rotation = Quat::Identity(); // the exact quaternion behind writtenOrientation
+    // The body's own orientation as a quaternion: the exact cached one while the matrix is still the one it
+    // made, else the game's matrix converted.
+    Quat ownRotation() const {
+        return m_dyn.orientation == writtenOrientation ? rotation : toQuat(m_dyn.orientation);
+    }
     // What the integrator's forces did to the composite's velocities (about its centre of mass) this step:
     // the contact solver re-applies it a share per sub-step.
     Vec3 forceDv = Vec3::Zero(), forceDw = Vec3::Zero();

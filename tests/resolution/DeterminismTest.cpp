@@ -36,7 +36,7 @@ unsigned long long boxPile() {
 
 // The committed results: g++ and clang++ (x86-64, Debian 12) agree, in every build type: SSE2 arithmetic,
 // no FMA contraction (-ffp-contract=off), and scene code that draws its random numbers in a stated order.
-constexpr unsigned long long kShootingHash = 0xe96eb39cdbc23defull;
+constexpr unsigned long long kShootingHash = 0x7712da87bb1ad3ddull;
 constexpr unsigned long long kBoxPileHash = 0x9a68a4d0e6fcc1e2ull;
 
 } // namespace
