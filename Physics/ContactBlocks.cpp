@@ -278,18 +278,23 @@ void ContactBlocks::solve(std::vector<SolverBody>& bodies, const Sweep& sweep) {
         };
         solveNormal();
         solveNormal();
-        if (block.friction)
-            for (int i = 0; i < block.points; ++i) {
-                BlockPoint& q = block.p[i];
-                const Lanes limit = block.frictionCoefficient * q.impulse[0], lower = -limit;
-                for (int r = 1; r < 3; ++r) {
-                    const Lanes total =
-                        clampOf(q.impulse[r] - rowSpeed(q.row[r], vel) * q.row[r].mass, lower, limit);
-                    applyRow(q.row[r], block.invMassA, block.invMassB, total - q.impulse[r], vel);
-                    q.impulse[r] = total;
+        // The push out moves along the normals only: its velocities are thrown away after the move, and
+        // friction there (bounded by the load the normal impulse carries) pushed stacked boxes sideways in
+        // every sub-step (ContactSolver.cpp, before solveContacts).
+        if (!sweep.pushOut) {
+            if (block.friction)
+                for (int i = 0; i < block.points; ++i) {
+                    BlockPoint& q = block.p[i];
+                    const Lanes limit = block.frictionCoefficient * q.impulse[0], lower = -limit;
+                    for (int r = 1; r < 3; ++r) {
+                        const Lanes total =
+                            clampOf(q.impulse[r] - rowSpeed(q.row[r], vel) * q.row[r].mass, lower, limit);
+                        applyRow(q.row[r], block.invMassA, block.invMassB, total - q.impulse[r], vel);
+                        q.impulse[r] = total;
+                    }
                 }
-            }
-        solveNormal();
+            solveNormal();
+        }
         scatterBlock(block, vel, u);
     }
     storeVelocities(bodies);

@@ -65,8 +65,9 @@ public:
     void prepare(std::vector<Manifold>& manifolds, const std::vector<SolverBody>& bodies);
     // Re-applies the accumulated impulses (an impact's only in the first sub-step).
     void warmStart(std::vector<SolverBody>& bodies, bool firstSubstep, Real impactSpeed);
-    // One sweep: per manifold the normal impulses twice, friction, the normal impulses again, each point
-    // measured against its gap (measured first when the sweep says so).
+    // One sweep: per manifold the normal impulses twice, friction, the normal impulses again (a push out:
+    // the normal impulses twice, no friction), each point measured against its gap (measured first when the
+    // sweep says so).
     void solve(std::vector<SolverBody>& bodies, const Sweep& sweep);
     void saveImpulses();
     void restoreImpulses();

@@ -251,6 +251,10 @@ void ContactSolver::warmStart(bool firstSubstep) {
 //  - One normal pass before friction leaves a box that landed flat turning (its first corners are solved
 //    first), and friction answers the turning: it bounced off sideways, 0.15 rad/s and 20 cm in 4 s. After
 //    two passes, 0.001 rad/s and 1 cm.
+//  - The push-out sweep solves the normal impulses twice and no friction: its velocities only move the
+//    bodies and are then thrown away. With friction there the awake 210-box pyramid's top walked sideways,
+//    11-26 mm in 10 s over eight starts 1 um apart; without, 8-10 mm, most of it the stack's settling (a
+//    single normal pass there left the 1,000-box pile overlapping twice as deep).
 // Each point's target: a point apart may close its gap within the sub-step, no more. An impact at a touch
 // (where the continuous stage leaves a fast body) is stopped rigidly: a soft stop lets a few % of the
 // approach through, metres in a sub-step at 10^4 m/s; also in the push-out pass, where the approach is

@@ -36,8 +36,8 @@ unsigned long long boxPile() {
 
 // The committed results: g++ and clang++ (x86-64, Debian 12) agree, in every build type: SSE2 arithmetic,
 // no FMA contraction (-ffp-contract=off), and scene code that draws its random numbers in a stated order.
-constexpr unsigned long long kShootingHash = 0x7712da87bb1ad3ddull;
-constexpr unsigned long long kBoxPileHash = 0x9a68a4d0e6fcc1e2ull;
+constexpr unsigned long long kShootingHash = 0x08de3e60a5bdef70ull;
+constexpr unsigned long long kBoxPileHash = 0xe9f071ebe1a66d55ull;
 
 } // namespace
 

@@ -162,15 +162,28 @@ TEST(Resolution, TowerOfTenStandsTenSecondsWithTopDriftUnder1cm) {
     }
 }
 
-TEST(Resolution, PyramidOf210BoxesStandsTenSecondsWithTopDriftUnder5cm) {
-    SceneFixture f(10);
-    buildPyramid(*f.world, 20);
-    ASSERT_EQ(f.world->bodies().size(), 210u);
-    RBDynamics* top = f.world->bodies().back()->getDynamics();
-    Vector start = top->position;
-    f.seconds(10.0f);
-    float drift = (top->position - start).length();
-    EXPECT_LT(drift, 0.05f);
+// The 210-box pyramid, awake for 10 s at the defaults (4 iterations, sleeping off so that every step solves
+// it): its top moves less than 1 cm, the median of five starts 1 um apart (the drift is chaotic). About 8 mm
+// of it is the stack settling (each of its 20 interfaces gives load / (m_eff w^2)); the rest is sideways.
+// With friction in the push-out sweep the top walked sideways too: 11-26 mm in eight starts, median 19 mm.
+TEST(Resolution, PyramidOf210BoxesStandsTenSecondsAwakeWithTopDriftUnder1cm) {
+    std::vector<float> drifts, sideways;
+    for (unsigned start = 0; start < 5; ++start) {
+        SceneFixture f(4);
+        settingsOf(f.scene)->setSleepingEnabled(false);
+        buildPyramid(*f.world, 20);
+        ASSERT_EQ(f.world->bodies().size(), 210u);
+        if (start > 0) jitterStart(*f.world, start);
+        RBDynamics* top = f.world->bodies().back()->getDynamics();
+        const Vector begin = top->position;
+        f.seconds(10.0f);
+        const Vector moved = top->position - begin;
+        drifts.push_back(moved.length());
+        sideways.push_back(std::sqrt(moved.x * moved.x + moved.z * moved.z));
+    }
+    const float drift = medianOfStarts(drifts);
+    EXPECT_LT(drift, 0.01f);
+    EXPECT_LT(medianOfStarts(sideways), 0.005f);
     RecordProperty("pyramid_top_drift_m", std::to_string(drift));
 }
 
