@@ -255,7 +255,7 @@ void ContactBlocks::solve(std::vector<SolverBody>& bodies, const Sweep& sweep) {
             bias[i] = select(apart, q.gap / h, zero);
             massScale[i] = one;
             impulseScale[i] = zero;
-            if (sweep.pushOut) {
+            if (sweep.pass == Pass::PushOut) {
                 const LaneMask notSoft = orMask(apart, rigid);
                 bias[i] = select(notSoft, bias[i], maxOf(block.biasRate * q.gap, maxPush));
                 massScale[i] = select(notSoft, one, block.massScale);
@@ -277,11 +277,11 @@ void ContactBlocks::solve(std::vector<SolverBody>& bodies, const Sweep& sweep) {
             }
         };
         solveNormal();
-        solveNormal();
+        if (sweep.pass != Pass::Relax) solveNormal();
         // The push out moves along the normals only: its velocities are thrown away after the move, and
         // friction there (bounded by the load the normal impulse carries) pushed stacked boxes sideways in
         // every sub-step (ContactSolver.cpp, before solveContacts).
-        if (!sweep.pushOut) {
+        if (sweep.pass != Pass::PushOut) {
             if (block.friction)
                 for (int i = 0; i < block.points; ++i) {
                     BlockPoint& q = block.p[i];

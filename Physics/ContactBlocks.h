@@ -47,10 +47,13 @@ struct ContactBlock {
 
 class ContactBlocks {
 public:
+    // A sub-step's three sweeps (ContactSolver::solve): the velocities; the push out of overlap on top of
+    // them (thrown away after the move); and the velocities again at the new poses.
+    enum class Pass { Velocity, PushOut, Relax };
     // What a sweep needs of the solver's settings.
     struct Sweep {
         Real h;           // the sub-step
-        bool pushOut;     // overlap pushed out softly (else only approach stopped)
+        Pass pass;        // PushOut: overlap pushed out softly (else only approach stopped)
         bool measureGaps; // each point's gap at the bodies' poses first (else the last measured still hold)
         Real touchOverlap, restitutionThreshold, maxPushSpeed;
     };
@@ -65,9 +68,9 @@ public:
     void prepare(std::vector<Manifold>& manifolds, const std::vector<SolverBody>& bodies);
     // Re-applies the accumulated impulses (an impact's only in the first sub-step).
     void warmStart(std::vector<SolverBody>& bodies, bool firstSubstep, Real impactSpeed);
-    // One sweep: per manifold the normal impulses twice, friction, the normal impulses again (a push out:
-    // the normal impulses twice, no friction), each point measured against its gap (measured first when the
-    // sweep says so).
+    // One sweep: per manifold the normal impulses twice (once in a relax), friction, the normal impulses
+    // again (a push out: the normal impulses twice, no friction), each point measured against its gap
+    // (measured first when the sweep says so).
     void solve(std::vector<SolverBody>& bodies, const Sweep& sweep);
     void saveImpulses();
     void restoreImpulses();
