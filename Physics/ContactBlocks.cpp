@@ -276,11 +276,12 @@ void ContactBlocks::solve(std::vector<SolverBody>& bodies, const Sweep& sweep) {
                 q.maxNormal = maxOf(q.maxNormal, total);
             }
         };
+        // The relax starts from velocities this sub-step solved already: one normal pass before friction. The
+        // push out moves along the normals only: its velocities are thrown away after the move, and friction
+        // there (bounded by the load the normal impulse carries) pushed stacked boxes sideways in every
+        // sub-step. Measurements for both: ContactSolver.cpp, before solveContacts.
         solveNormal();
         if (sweep.pass != Pass::Relax) solveNormal();
-        // The push out moves along the normals only: its velocities are thrown away after the move, and
-        // friction there (bounded by the load the normal impulse carries) pushed stacked boxes sideways in
-        // every sub-step (ContactSolver.cpp, before solveContacts).
         if (sweep.pass != Pass::PushOut) {
             if (block.friction)
                 for (int i = 0; i < block.points; ++i) {
