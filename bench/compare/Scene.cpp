@@ -216,8 +216,19 @@ std::vector<BodyState> readAll(const Sim& sim) {
     return out;
 }
 
+namespace {
+// The 99th percentile of positive values (0 when there are none).
+double percentile99(std::vector<double>& values) {
+    if (values.empty()) return 0;
+    const size_t at = (values.size() - 1) * 99 / 100;
+    std::nth_element(values.begin(), values.begin() + std::ptrdiff_t(at), values.end());
+    return values[at];
+}
+} // namespace
+
 Accuracy measure(const SceneDesc& scene, const std::vector<BodyState>& states) {
     Accuracy acc;
+    std::vector<double> groundDepths, pairDepths;
     const size_t n = std::min(scene.bodies.size(), states.size());
     for (size_t i = 0; i < n; ++i) {
         const BodyDesc& b = scene.bodies[i];
@@ -227,6 +238,7 @@ Accuracy measure(const SceneDesc& scene, const std::vector<BodyState>& states) {
             low = s.pose.p[1] -
                   b.size * (std::fabs(s.pose.R[3]) + std::fabs(s.pose.R[4]) + std::fabs(s.pose.R[5]));
         if (scene.ground) acc.groundPenetration = std::max(acc.groundPenetration, -low);
+        if (scene.ground && low < 0) groundDepths.push_back(-low);
         if (std::sqrt(dot(s.v, s.v)) > 0.05) ++acc.moving;
     }
     // Sweep along x over the bounding spheres.
@@ -244,10 +256,13 @@ Accuracy measure(const SceneDesc& scene, const std::vector<BodyState>& states) {
             double rj = boundingRadius(scene.bodies[j]);
             if (states[j].pose.p[0] - states[i].pose.p[0] > ri + widest) break;
             if (distance(states[i].pose.p, states[j].pose.p) > ri + rj) continue;
-            acc.pairPenetration = std::max(acc.pairPenetration,
-                                           pairDepth(scene.bodies[i], states[i], scene.bodies[j], states[j]));
+            const double depth = pairDepth(scene.bodies[i], states[i], scene.bodies[j], states[j]);
+            acc.pairPenetration = std::max(acc.pairPenetration, depth);
+            if (depth > 0) pairDepths.push_back(depth);
         }
     }
+    acc.groundPenetration99 = percentile99(groundDepths);
+    acc.pairPenetration99 = percentile99(pairDepths);
     return acc;
 }
 

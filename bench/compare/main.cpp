@@ -124,14 +124,15 @@ Summary runRow(const std::vector<Engine>& engines, const Row& row) {
             extra[e].push_back(sum.r[e].extra);
         }
     }
-    std::printf("  %-9s %9s %15s %13s %7s  %s\n", "engine", "ms/step", "ground pen mm", "pair pen mm",
-                "moving", extraLabel(row.extra));
+    std::printf("  %-9s %9s %15s %13s %9s %9s %7s  %s\n", "engine", "ms/step", "ground pen mm", "pair pen mm",
+                "ground 99", "pair 99", "moving", extraLabel(row.extra));
     for (size_t e = 0; e < engines.size(); ++e) {
         Result& r = sum.r[e];
         r.ms = median(ms[e]);
         if (row.extra == Extra::TopDrift) r.extra = median(extra[e]);
-        std::printf("  %-9s %9.3f %15.2f %13.2f %7zu", engines[e].info.name.c_str(), r.ms,
-                    1000 * r.acc.groundPenetration, 1000 * r.acc.pairPenetration, r.acc.moving);
+        std::printf("  %-9s %9.3f %15.2f %13.2f %9.2f %9.2f %7zu", engines[e].info.name.c_str(), r.ms,
+                    1000 * r.acc.groundPenetration, 1000 * r.acc.pairPenetration,
+                    1000 * r.acc.groundPenetration99, 1000 * r.acc.pairPenetration99, r.acc.moving);
         if (row.extra == Extra::TopDrift) std::printf("  %.1f", 1000 * r.extra);
         if (row.extra == Extra::Sink) std::printf("  %.1f / %.1f", 1000 * r.extra, 1000 * r.extra2);
         std::printf("\n");
@@ -248,16 +249,20 @@ void equalAccuracyRow(const std::vector<Engine>& engines, int steps, const SimOp
 void summaryTable(const std::vector<Summary>& rows) {
     std::printf("\n== summary (ms per step; accuracy Guardian / Bullet / ODE)\n");
     std::printf(
-        "| row | Guardian ms | Bullet ms | ODE ms | G/B | G/O | ground pen mm | pair pen mm | moving | "
-        "drift or sink mm |\n|---|---|---|---|---|---|---|---|---|---|\n");
+        "| row | Guardian ms | Bullet ms | ODE ms | G/B | G/O | ground pen mm | pair pen mm | ground p99 mm "
+        "| "
+        "pair p99 mm | moving | drift or sink mm |\n|---|---|---|---|---|---|---|---|---|---|---|---|\n");
     for (const Summary& s : rows) {
-        std::printf("| %s | %.3f | %.3f | %.3f | %.2f | %.2f | %.1f / %.1f / %.1f | %.1f / %.1f / %.1f | %zu "
-                    "/ %zu / %zu | ",
+        std::printf("| %s | %.3f | %.3f | %.3f | %.2f | %.2f | %.1f / %.1f / %.1f | %.1f / %.1f / %.1f | "
+                    "%.1f / %.1f / %.1f | %.1f / %.1f / %.1f | %zu / %zu / %zu | ",
                     s.name.c_str(), s.r[0].ms, s.r[1].ms, s.r[2].ms, s.r[0].ms / s.r[1].ms,
                     s.r[0].ms / s.r[2].ms, 1000 * s.r[0].acc.groundPenetration,
                     1000 * s.r[1].acc.groundPenetration, 1000 * s.r[2].acc.groundPenetration,
                     1000 * s.r[0].acc.pairPenetration, 1000 * s.r[1].acc.pairPenetration,
-                    1000 * s.r[2].acc.pairPenetration, s.r[0].acc.moving, s.r[1].acc.moving,
+                    1000 * s.r[2].acc.pairPenetration, 1000 * s.r[0].acc.groundPenetration99,
+                    1000 * s.r[1].acc.groundPenetration99, 1000 * s.r[2].acc.groundPenetration99,
+                    1000 * s.r[0].acc.pairPenetration99, 1000 * s.r[1].acc.pairPenetration99,
+                    1000 * s.r[2].acc.pairPenetration99, s.r[0].acc.moving, s.r[1].acc.moving,
                     s.r[2].acc.moving);
         if (s.r[0].extra != 0 || s.r[1].extra != 0 || s.r[2].extra != 0)
             std::printf("%.1f / %.1f / %.1f", 1000 * s.r[0].extra, 1000 * s.r[1].extra, 1000 * s.r[2].extra);
