@@ -255,10 +255,9 @@ void equalAccuracyRow(const std::vector<Engine>& engines, const Row& row, int st
 
 void summaryTable(const std::vector<Summary>& rows) {
     std::printf("\n== summary (ms per step; accuracy Guardian / Bullet / ODE)\n");
-    std::printf(
-        "| row | Guardian ms | Bullet ms | ODE ms | G/B | G/O | ground pen mm | pair pen mm | ground p99 mm "
-        "| "
-        "pair p99 mm | moving | drift or sink mm |\n|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+    std::printf("| row | Guardian ms | Bullet ms | ODE ms | G/B | G/O | ground pen mm | pair pen mm | "
+                "ground p99 mm | pair p99 mm | moving | drift or sink mm |\n"
+                "|---|---|---|---|---|---|---|---|---|---|---|---|\n");
     for (const Summary& s : rows) {
         std::printf("| %s | %.3f | %.3f | %.3f | %.2f | %.2f | %.1f / %.1f / %.1f | %.1f / %.1f / %.1f | "
                     "%.1f / %.1f / %.1f | %.1f / %.1f / %.1f | %zu / %zu / %zu | ",
