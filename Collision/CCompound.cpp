@@ -1,4 +1,5 @@
 // CCompound.cpp - compound geometry (CreateCCompound): spheres and boxes at local offsets on one body.
+#include "BoxAxes.h"
 #include "CollisionGeometry.h"
 #include "iCCompound.h"
 #include "iUtilities.h"
@@ -97,9 +98,7 @@ public:
             } else {
                 Matrix w = c.rotation * r;
                 s.box.centre = centre;
-                s.box.axis[0] = w.direction('x').normalize();
-                s.box.axis[1] = w.direction('y').normalize();
-                s.box.axis[2] = w.direction('z').normalize();
+                gcol::unitAxes(w, s.box.axis);
                 s.box.halfExtents = c.half;
             }
             out.push_back(s);

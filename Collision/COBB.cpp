@@ -1,5 +1,6 @@
 // COBB.cpp - the oriented box (CreateCOBB): three half extents about its body frame's origin, turning with
 // the body.
+#include "BoxAxes.h"
 #include "CollisionGeometry.h"
 #include "iCOBB.h"
 #include "iUtilities.h"
@@ -43,9 +44,7 @@ public:
         s.kind = gcol::ShapeKind::Box;
         s.box.centre = origin;
         // Normalised: the simulator tolerates orientation drift up to 1e-2 before cleaning it.
-        s.box.axis[0] = r.direction('x').normalize();
-        s.box.axis[1] = r.direction('y').normalize();
-        s.box.axis[2] = r.direction('z').normalize();
+        gcol::unitAxes(r, s.box.axis);
         s.box.halfExtents = m_half;
         out.push_back(s);
     }

@@ -334,13 +334,6 @@ RBDynamics::MassProperties RBDynamics::getCompositeMassProperties() const {
 }
 
 // --- attachment chains ---
-RBDynamics* RBDynamics::attachedTo() const { return m_parent; }
-
-RBDynamics* RBDynamics::attachmentRoot() const {
-    const RBDynamics* r = this;
-    while (r->m_parent) r = r->m_parent;
-    return const_cast<RBDynamics*>(r);
-}
 
 // World poses go from the root down the chain (p_world = p R_parent + P_parent, R_world = R R_parent), in
 // one pass: O(depth). (Recursing for the position and the orientation separately was O(depth^2) per call.)

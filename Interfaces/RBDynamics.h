@@ -172,8 +172,12 @@ struct RBDynamics {
     // Attaches this body to p, keeping its world pose; nullptr detaches (the body keeps the world velocity it
     // had as part of the composite). Attaching to itself or a descendant is refused with error().
     void attachTo(RBDynamics* p);
-    RBDynamics* attachedTo() const;
-    RBDynamics* attachmentRoot() const;
+    RBDynamics* attachedTo() const { return m_parent; }
+    RBDynamics* attachmentRoot() const { // (inline: spaces and the scene ask it of every body every step)
+        const RBDynamics* r = this;
+        while (r->m_parent) r = r->m_parent;
+        return const_cast<RBDynamics*>(r);
+    }
     // The seed: the mass of the body at the root of the attachment chain (its own mass when unattached).
     float getMass() const;
     // Mass of the whole composite rooted at attachmentRoot() (INFINITE_MASS if any part is infinite).
