@@ -150,13 +150,23 @@ void grow(gcol::Aabb& box, const gcol::Aabb& other) {
 
 namespace {
 
-// Bit for bit (so -0 is not 0, and equal bits are equal values: poses here are finite).
+// Bit for bit (so -0 is not 0, and equal bits are equal values: poses here are finite). Eight bytes at a
+// time, without a copy or a call: every call of the space compares a few of these a geometry.
 template <size_t N> bool sameWords(const void* a, const void* b) {
-    std::uint32_t x[N], y[N];
-    std::memcpy(x, a, sizeof x);
-    std::memcpy(y, b, sizeof y);
-    std::uint32_t diff = 0;
-    for (size_t i = 0; i < N; ++i) diff |= x[i] ^ y[i];
+    const unsigned char *p = static_cast<const unsigned char*>(a), *q = static_cast<const unsigned char*>(b);
+    std::uint64_t diff = 0;
+    for (size_t i = 0; i < N / 2; ++i) {
+        std::uint64_t x, y;
+        std::memcpy(&x, p + 8 * i, 8);
+        std::memcpy(&y, q + 8 * i, 8);
+        diff |= x ^ y;
+    }
+    if (N % 2) {
+        std::uint32_t x, y;
+        std::memcpy(&x, p + 4 * (N - 1), 4);
+        std::memcpy(&y, q + 4 * (N - 1), 4);
+        diff |= x ^ y;
+    }
     return diff == 0;
 }
 bool sameBits(const Vector& a, const Vector& b) { return sameWords<3>(&a, &b); }
