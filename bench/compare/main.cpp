@@ -208,8 +208,7 @@ void broadphaseRow(const std::vector<Engine>& engines, int boxes, int rounds) {
                 m[0] / m[1], m[0] / m[2], s[0] / s[1], s[0] / s[2]);
     std::printf("  octree space: moved Guardian/Bullet %.2f, still %.2f\n", m[3] / m[1], s[3] / s[1]);
     std::printf("  candidate pairs alone / Bullet's dbvt: sort and sweep moved %.2f, still %.2f, warm %.2f; "
-                "tree moved "
-                "%.2f, still %.2f, warm %.2f\n",
+                "tree moved %.2f, still %.2f, warm %.2f\n",
                 m[4] / m[1], s[4] / s[1], w[4] / w[1], m[5] / m[1], s[5] / s[1], w[5] / w[1]);
     std::fflush(stdout);
 }

@@ -27,7 +27,6 @@ TEST(BoxAxes, EveryRowIsNormalisedExactlyAsVectorNormalizeDoes) {
                               std::numeric_limits<float>::infinity(),
                               -std::numeric_limits<float>::infinity(),
                               std::numeric_limits<float>::quiet_NaN()};
-    int compared = 0;
     for (int n = 0; n < 100000; ++n) {
         Matrix m(1);
         for (int r = 0; r < 4; ++r)
@@ -55,10 +54,14 @@ TEST(BoxAxes, EveryRowIsNormalisedExactlyAsVectorNormalizeDoes) {
             ASSERT_TRUE(sameBits(axes[i], expected[i]))
                 << "matrix " << n << " row " << i << ": " << axes[i].x << " " << axes[i].y << " " << axes[i].z
                 << " against " << expected[i].x << " " << expected[i].y << " " << expected[i].z;
-            ++compared;
+            // What a box needs of them: a drifted rotation's rows come out unit (in double, to float
+            // rounding).
+            if (n % 3 == 0) {
+                const double x = axes[i].x, y = axes[i].y, z = axes[i].z;
+                ASSERT_NEAR(std::sqrt(x * x + y * y + z * z), 1.0, 1e-6) << "matrix " << n << " row " << i;
+            }
         }
     }
-    EXPECT_EQ(compared, 300000);
 }
 
 } // namespace
