@@ -1,13 +1,15 @@
-// BoxAxes.h - a box's three unit axes at a rotation (its rows, each normalised as Vector::normalize does):
-// what every box shape is built from, once per box and call in a space's gathering of moved boxes. On SSE2
-// the three lengths, square roots and divisions go side by side; each lane does the scalar operations in
-// their order (x x + y y + z z, one square root, one division a component), so the bits are the same.
+// BoxAxes.h - a box's three unit axes at a rotation (its rows, each normalised as Vector::normalize does),
+// and a box shape's world bounds: what every moved box costs a space's gathering, once per box and call. On
+// SSE2 the three components go side by side; each lane does the scalar operations in their order (x x + y y
+// + z z, one square root, one division a component; h.x |a0| + h.y |a1| + h.z |a2|), so the bits are the
+// same as the scalar code's.
 #pragma once
 
 #include "MathDeclarations.h"
+#include "Shapes.h"
 
 #if defined(__SSE2__)
-#include <xmmintrin.h>
+#include <emmintrin.h>
 #endif
 
 namespace gcol {
@@ -34,6 +36,37 @@ inline void unitAxes(const Matrix& r, Vector axis[3]) {
     axis[0] = r.direction('x').normalize();
     axis[1] = r.direction('y').normalize();
     axis[2] = r.direction('z').normalize();
+#endif
+}
+
+// gcol::shapeAabb of a box, written out: boxProjectedRadius along a world axis is h.x |axis[0] . e| +
+// h.y |axis[1] . e| + h.z |axis[2] . e|, and for finite axes |axis . e_x| is exactly |axis.x| (the other
+// products are zeros, which leave a sum as it is but for the sign of a zero, and fabs drops that). The
+// same bits, without the multiplications by 0 and 1.
+inline void boxBounds(const BoxShape& b, Aabb& out) {
+    const Vector& h = b.halfExtents;
+#if defined(__SSE2__)
+    // Each load takes the next float too (lane 3, never used): the fields follow one another in BoxShape.
+    const __m128 magnitude = _mm_castsi128_ps(_mm_set1_epi32(0x7FFFFFFF));
+    const __m128 a0 = _mm_and_ps(magnitude, _mm_loadu_ps(&b.axis[0].x));
+    const __m128 a1 = _mm_and_ps(magnitude, _mm_loadu_ps(&b.axis[1].x));
+    const __m128 a2 = _mm_and_ps(magnitude, _mm_loadu_ps(&b.axis[2].x));
+    const __m128 e =
+        _mm_add_ps(_mm_add_ps(_mm_mul_ps(_mm_set1_ps(h.x), a0), _mm_mul_ps(_mm_set1_ps(h.y), a1)),
+                   _mm_mul_ps(_mm_set1_ps(h.z), a2));
+    const __m128 c = _mm_loadu_ps(&b.centre.x);
+    alignas(16) float lo[4], hi[4];
+    _mm_store_ps(lo, _mm_sub_ps(c, e));
+    _mm_store_ps(hi, _mm_add_ps(c, e));
+    out.min = Vector(lo[0], lo[1], lo[2]);
+    out.max = Vector(hi[0], hi[1], hi[2]);
+#else
+    const Vector &a0 = b.axis[0], &a1 = b.axis[1], &a2 = b.axis[2];
+    const Vector e(h.x * std::fabs(a0.x) + h.y * std::fabs(a1.x) + h.z * std::fabs(a2.x),
+                   h.x * std::fabs(a0.y) + h.y * std::fabs(a1.y) + h.z * std::fabs(a2.y),
+                   h.x * std::fabs(a0.z) + h.y * std::fabs(a1.z) + h.z * std::fabs(a2.z));
+    out.min = b.centre - e;
+    out.max = b.centre + e;
 #endif
 }
 

@@ -86,10 +86,10 @@ public:
                                                               : boxShapeMass(c.half, c.offset, c.rotation));
         return combineShapeMass(parts.data(), parts.size());
     }
-    void worldShapes(const Vector& origin, const Matrix& r,
-                     std::vector<gcol::WorldShape>& out) const override {
+    int shapeCount() const override { return int(m_children.size()); }
+    void writeWorldShapes(const Vector& origin, const Matrix& r, gcol::WorldShape* out) const override {
         for (const Child& c : m_children) {
-            gcol::WorldShape s;
+            gcol::WorldShape& s = *out++;
             s.kind = c.kind;
             Vector centre = origin + r.direction(c.offset);
             if (c.kind == gcol::ShapeKind::Sphere) {
@@ -101,7 +101,6 @@ public:
                 gcol::unitAxes(w, s.box.axis);
                 s.box.halfExtents = c.half;
             }
-            out.push_back(s);
         }
     }
     float minDimension() const override {

@@ -38,15 +38,14 @@ public:
         shapeChanged();
     }
     ShapeMass shapeMass() const override { return boxShapeMass(m_half); }
-    void worldShapes(const Vector& origin, const Matrix& r,
-                     std::vector<gcol::WorldShape>& out) const override {
-        gcol::WorldShape s;
+    int shapeCount() const override { return 1; }
+    void writeWorldShapes(const Vector& origin, const Matrix& r, gcol::WorldShape* out) const override {
+        gcol::WorldShape& s = *out;
         s.kind = gcol::ShapeKind::Box;
         s.box.centre = origin;
         // Normalised: the simulator tolerates orientation drift up to 1e-2 before cleaning it.
         gcol::unitAxes(r, s.box.axis);
         s.box.halfExtents = m_half;
-        out.push_back(s);
     }
     float minDimension() const override { return 2.0f * std::fmin(m_half.x, std::fmin(m_half.y, m_half.z)); }
     void start() { joinDefaultSpace(L"CreateCOBB"); }

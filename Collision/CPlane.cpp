@@ -47,13 +47,12 @@ public:
         m_offset = offset;
         shapeChanged(); // spaces rebuild it, and what slept on it wakes
     }
-    void worldShapes(const Vector& origin, const Matrix& r,
-                     std::vector<gcol::WorldShape>& out) const override {
-        gcol::WorldShape s;
+    int shapeCount() const override { return 1; }
+    void writeWorldShapes(const Vector& origin, const Matrix& r, gcol::WorldShape* out) const override {
+        gcol::WorldShape& s = *out;
         s.kind = gcol::ShapeKind::Plane;
         s.plane.normal = r.direction(m_normal).normalize();
         s.plane.offset = m_offset + dot(s.plane.normal, origin);
-        out.push_back(s);
     }
     // A plane is never sampled on its own account; its size plays no part.
     float minDimension() const override { return std::numeric_limits<float>::infinity(); }

@@ -32,12 +32,12 @@ public:
         shapeChanged();
     }
     ShapeMass shapeMass() const override { return sphereShapeMass(m_radius); }
-    void worldShapes(const Vector& origin, const Matrix&, std::vector<gcol::WorldShape>& out) const override {
-        gcol::WorldShape s;
+    int shapeCount() const override { return 1; }
+    void writeWorldShapes(const Vector& origin, const Matrix&, gcol::WorldShape* out) const override {
+        gcol::WorldShape& s = *out;
         s.kind = gcol::ShapeKind::Sphere;
         s.sphere.centre = origin;
         s.sphere.radius = m_radius;
-        out.push_back(s);
     }
     float minDimension() const override { return 2.0f * m_radius; }
     void start() { joinDefaultSpace(L"CreateCSphere"); }

@@ -28,9 +28,17 @@ public:
     // The CollisionGeometry behind an interface pointer (nullptr if it is not one of this package's).
     static CollisionGeometry* from(iCollisionGeometry* g) { return dynamic_cast<CollisionGeometry*>(g); }
 
-    // Appends this geometry's shapes at the body pose (origin, row-vector rotation) to out.
-    virtual void worldShapes(const Vector& origin, const Matrix& rotation,
-                             std::vector<gcol::WorldShape>& out) const = 0;
+    // How many shapes it is made of (changes only with its shape version).
+    virtual int shapeCount() const = 0;
+    // Writes its shapeCount() shapes at the body pose (origin, row-vector rotation) to out[0..count).
+    virtual void writeWorldShapes(const Vector& origin, const Matrix& rotation,
+                                  gcol::WorldShape* out) const = 0;
+    // Appends them to out.
+    void worldShapes(const Vector& origin, const Matrix& rotation, std::vector<gcol::WorldShape>& out) const {
+        const size_t n = out.size();
+        out.resize(n + size_t(shapeCount()));
+        writeWorldShapes(origin, rotation, out.data() + n);
+    }
     // The smallest dimension (diameter or full box width) of its shapes: the scale for motion sampling.
     virtual float minDimension() const = 0;
     virtual iCollisionGeometry* asInterface() = 0;

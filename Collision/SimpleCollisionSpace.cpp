@@ -2,6 +2,7 @@
 // space; the candidate pairs come from its broadphase (SweepAndPrune.cpp, TreeBroadphase.cpp). The pair
 // tests are in ContinuousPairTest.cpp, listeners in SpaceListeners.cpp, queries in SpaceQueries.cpp.
 #include "SimpleCollisionSpace.h"
+#include "BoxAxes.h"
 #include "Broadphase.h"
 #include "MathEigen.h"
 #include "SweepAndPrune.h"
@@ -14,6 +15,10 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 SimpleCollisionSpace::SimpleCollisionSpace(size_t samplesPerSecond, std::unique_ptr<Broadphase> broadphase)
     : m_samplesPerSecond(samplesPerSecond), m_broadphase(std::move(broadphase)) {
@@ -173,23 +178,12 @@ bool sameBits(const Vector& a, const Vector& b) { return sameWords<3>(&a, &b); }
 bool sameBits(const Matrix& a, const Matrix& b) { return sameWords<16>(&a, &b); }
 bool sameBits(const gcol::Aabb& a, const gcol::Aabb& b) { return sameWords<6>(&a, &b); }
 
-// gcol::shapeAabb of a bounded shape, the box's case written out: boxProjectedRadius along a world axis is
-// h.x |axis[0] . e| + h.y |axis[1] . e| + h.z |axis[2] . e|, and for finite axes |axis . e_x| is exactly
-// |axis.x| (the other products are zeros, which leave a sum as it is but for the sign of a zero, and fabs
-// drops that). The same bits, without the multiplications by 0 and 1.
-void shapeBounds(const gcol::WorldShape& s, gcol::Aabb& out) {
-    if (s.kind != gcol::ShapeKind::Box) {
+// gcol::shapeAabb of a bounded shape, the box's case written out (BoxAxes.h).
+inline void shapeBounds(const gcol::WorldShape& s, gcol::Aabb& out) {
+    if (s.kind == gcol::ShapeKind::Box)
+        gcol::boxBounds(s.box, out);
+    else
         gcol::shapeAabb(s, out);
-        return;
-    }
-    const gcol::BoxShape& b = s.box;
-    const Vector& h = b.halfExtents;
-    const Vector &a0 = b.axis[0], &a1 = b.axis[1], &a2 = b.axis[2];
-    const Vector e(h.x * std::fabs(a0.x) + h.y * std::fabs(a1.x) + h.z * std::fabs(a2.x),
-                   h.x * std::fabs(a0.y) + h.y * std::fabs(a1.y) + h.z * std::fabs(a2.y),
-                   h.x * std::fabs(a0.z) + h.y * std::fabs(a1.z) + h.z * std::fabs(a2.z));
-    out.min = b.centre - e;
-    out.max = b.centre + e;
 }
 
 // A body without a parent is at a pose made from its position, the rotation rows of its orientation and
@@ -202,12 +196,26 @@ bool sameRaw(const SimpleCollisionSpace::Entry::Cache& c, const RBDynamics& d) {
            sameWords<3>(&c.rawRows[1], row(d.orientation, 1)) &&
            sameWords<3>(&c.rawRows[2], row(d.orientation, 2));
 }
+// o.isFinite() && r.isFinite() for a rotation (its fourth row and column 0 0 0 1), at once: x - x is 0 for
+// a finite x and NaN for an infinite or NaN one, and a sum of those is 0 only when every one is.
+bool finitePose(const Vector& o, const Matrix& r) {
+#if defined(__SSE2__)
+    const float* m = r.data();
+    const __m128 x = _mm_loadu_ps(m), y = _mm_loadu_ps(m + 4), z = _mm_loadu_ps(m + 8);
+    const __m128 p = _mm_set_ps(0.0f, o.z, o.y, o.x);
+    const __m128 sum = _mm_add_ps(_mm_add_ps(_mm_sub_ps(x, x), _mm_sub_ps(y, y)),
+                                  _mm_add_ps(_mm_sub_ps(z, z), _mm_sub_ps(p, p)));
+    return _mm_movemask_ps(_mm_cmpeq_ps(sum, _mm_setzero_ps())) == 0xF;
+#else
+    return o.isFinite() && r.isFinite();
+#endif
+}
 // CollisionGeometry::currentPose of a geometry on d, a body without a parent: the same operations on the
 // same inputs (RBDynamics::getWorldOrigin, getWorldOrientation), without the copies.
 bool rawPose(const RBDynamics& d, Vector& origin, Matrix& rotation) {
     const Vector o = d.position - d.orientation.direction(d.com);
     const Matrix r = d.orientation.rotation();
-    if (!o.isFinite() || !r.isFinite()) return false;
+    if (!finitePose(o, r)) return false;
     origin = o;
     rotation = r;
     return true;
@@ -221,19 +229,13 @@ void storeRaw(SimpleCollisionSpace::Entry::Cache& c, const RBDynamics& d) {
 
 } // namespace
 
-// e's shapes are m_newShapes now: in its room in m_shapes, or at the end when they no longer fit.
-void SimpleCollisionSpace::placeShapes(Entry& e) {
-    const int n = int(m_newShapes.size());
-    if (n > e.cache.capacity) {
-        m_shapeWaste += size_t(e.cache.capacity);
-        e.first = int(m_shapes.size());
-        e.cache.capacity = n;
-        m_shapes.insert(m_shapes.end(), m_newShapes.begin(), m_newShapes.end());
-        if (m_shapeWaste > m_shapes.size() / 2) m_layoutDirty = true; // compacted at the next call
-    } else {
-        for (int i = 0; i < n; ++i) m_shapes[size_t(e.first + i)] = m_newShapes[size_t(i)];
-    }
-    e.last = e.first + n;
+// Room for n shapes of e at the end of m_shapes: they no longer fit in its own.
+void SimpleCollisionSpace::moveToEnd(Entry& e, int n) {
+    m_shapeWaste += size_t(e.cache.capacity);
+    e.first = int(m_shapes.size());
+    e.cache.capacity = n;
+    m_shapes.resize(m_shapes.size() + size_t(n));
+    if (m_shapeWaste > m_shapes.size() / 2) m_layoutDirty = true; // compacted at the next call
 }
 
 // Brings e up to date with its geometry: false when the geometry takes no part in this call. A geometry
@@ -308,9 +310,10 @@ bool SimpleCollisionSpace::gatherEntry(Entry& e, bool continuous) {
     if (e.disturbed && st.hasPrevious && (!mover || st.previousBody != body)) m_restChanged = true;
     c.prevCurrent = prevIsPose;
     if (!same) {
-        m_newShapes.clear();
-        g->worldShapes(e.origin, e.rotation, m_newShapes);
-        placeShapes(e);
+        const int count = g->shapeCount();
+        if (count > c.capacity) moveToEnd(e, count);
+        e.last = e.first + count;
+        if (count > 0) g->writeWorldShapes(e.origin, e.rotation, &m_shapes[size_t(e.first)]);
         if (!c.sized || c.sizedVersion != version || e.plane) { // sizes follow the shapes alone
             e.minDim = g->minDimension();
             if (!e.plane) c.bound = g->asInterface()->getBoundingRadius();

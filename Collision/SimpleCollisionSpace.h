@@ -194,7 +194,7 @@ private:
         m_contactGeoms.resize(kept);
     }
     bool gatherEntry(Entry& e, bool continuous);
-    void placeShapes(Entry& e);          // m_newShapes becomes e's shapes in m_shapes
+    void moveToEnd(Entry& e, int n);     // e's room in m_shapes, too small for its n shapes, moves
     void layOutEntries();                // one entry per member again, cached ones carried over
     void gatherEntries(bool continuous); // every member's entry brought up to date; m_changed, m_relaid
     void testPair(const Entry& a, const Entry& b, float delta);
@@ -295,7 +295,7 @@ private:
     bool m_layoutDirty = true;      // members were added or removed, or m_shapes is mostly waste
     size_t m_shapeWaste = 0;        // shapes in m_shapes no entry owns
     // Scratch reused between calls.
-    std::vector<gcol::WorldShape> m_newShapes, m_scratchA, m_scratchB;
+    std::vector<gcol::WorldShape> m_scratchA, m_scratchB;
     const std::pair<int, int>* m_pairs =
         nullptr; // this call's candidate pairs, in test order (the broadphase's)
     size_t m_pairCount = 0;

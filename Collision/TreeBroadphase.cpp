@@ -23,7 +23,7 @@ gcol::Aabb boundsOf(const std::vector<gcol::WorldShape>& shapes) {
 }
 
 // gcol::overlaps of two proxies' exact boxes: x, y and z at once on SSE2 (the fourth lane, the entry index
-// against the stamp, is masked off).
+// against the fourth hi, is masked off).
 template <class Exact> bool boxesOverlap(const Exact& a, const Exact& b) {
 #if defined(__SSE2__)
     const __m128 lower = _mm_cmple_ps(_mm_load_ps(a.lo), _mm_load_ps(b.hi));
@@ -185,7 +185,6 @@ void TreeBroadphase::track(const SimpleCollisionSpace::Entry& e, int i) {
     ex.hi[1] = e.box.max.y;
     ex.hi[2] = e.box.max.z;
     ex.entry = i;
-    ex.changed = m_stamp;
 }
 
 void TreeBroadphase::listEntries(const std::vector<SimpleCollisionSpace::Entry>& entries) {
@@ -236,17 +235,15 @@ Broadphase::PairList TreeBroadphase::findPairs(const std::vector<SimpleCollision
     size_t n = 0;
     for (int p : m_planes)
         for (int i : m_bounded) out[n++] = EntryPair(std::min(p, i), std::max(p, i));
-    // Every kept pair is written and kept when it touches, without a branch that goes either way: a pair
-    // whose boxes did not change keeps the answer it had.
-    const unsigned stamp = m_stamp;
-    for (Pair& pr : m_pairs) {
-        const Exact& a = m_exact[size_t(pr.a)];
-        const Exact& b = m_exact[size_t(pr.b)];
-        const bool overlap = boxesOverlap(a, b);
-        const bool retest = (pr.touching < 0) | (a.changed == stamp) | (b.changed == stamp);
-        pr.touching = retest ? int(overlap) : pr.touching;
-        out[n] = EntryPair(std::min(a.entry, b.entry), std::max(a.entry, b.entry));
-        n += size_t(pr.touching);
+    // Every kept pair is tested again and written, kept when it touches, without a branch that goes either
+    // way. (Remembering each pair's answer and testing only pairs whose boxes changed cost more than it
+    // saved: the test is a few instructions, the bookkeeping as many and a store.)
+    const Exact* exact = m_exact.data();
+    for (const Pair& pr : m_pairs) {
+        const Exact& a = exact[pr.a];
+        const Exact& b = exact[pr.b];
+        out[n] = EntryPair(a.entry, b.entry); // a joined first: its entry comes first (the members' order)
+        n += size_t(boxesOverlap(a, b));
     }
     m_outCount = n;
     m_outValid = true;

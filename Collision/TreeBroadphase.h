@@ -17,8 +17,8 @@
 //
 // A call's work follows what changed: the space names the entries whose boxes changed, and only their
 // proxies are looked at (every entry's only when the space laid its entries out anew, or queries moved
-// proxies since). Each kept pair remembers whether its exact boxes overlapped; the test is made again only
-// for a pair one of whose boxes changed. When no box changed, the previous list stands as it is.
+// proxies since). When a box changed, every kept pair's exact boxes are compared again (a few instructions a
+// pair); when none did, the previous list stands as it is.
 #pragma once
 
 #include "Broadphase.h"
@@ -65,21 +65,20 @@ private:
         // The join orders, lower in the high half: sorted by key, pairs follow the space's order. (Join
         // orders are counted modulo 2^32 here: the order only goes wrong after 4 billion geometries joined.)
         uint64_t key;
-        int a, b;     // their proxies, a the earlier joined
-        int touching; // their exact boxes overlapped when last tested (-1: not tested yet)
+        int a, b; // their proxies, a the earlier joined
         bool operator<(const Pair& o) const { return key < o.key; }
     };
     static Pair pairOf(const Proxy& x, int p, const Proxy& y, int q) {
         const uint64_t ox = uint32_t(x.order), oy = uint32_t(y.order);
-        return ox < oy ? Pair{ox << 32 | oy, p, q, -1} : Pair{oy << 32 | ox, q, p, -1};
+        return ox < oy ? Pair{ox << 32 | oy, p, q} : Pair{oy << 32 | ox, q, p};
     }
     // What the pair list reads of each proxy, packed in two 16-byte rows (one SSE load each): its entry's
-    // exact box (lo, hi) and index, and the call that last changed that box.
+    // exact box (lo, hi) and index.
     struct alignas(16) Exact {
         float lo[3] = {0, 0, 0};
         int entry = -1;
         float hi[3] = {0, 0, 0};
-        unsigned changed = 0;
+        float unused = 0;
     };
     // Entry i (active, bounded) of this call: its proxy made or found, its fat box checked, its box noted.
     void track(const SimpleCollisionSpace::Entry& e, int i);

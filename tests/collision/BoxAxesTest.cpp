@@ -1,6 +1,7 @@
 // BoxAxesTest.cpp - gcol::unitAxes against its definition, Vector::normalize of each row, bit for bit: on
 // 10^5 random matrices (rotations with drift, arbitrary scales, rows of zeros, denormals, huge values, NaN
-// and infinity), fixed seed.
+// and infinity), fixed seed. gcol::boxBounds against the general gcol::shapeAabb, bit for bit, and against
+// the box's eight corners computed in double, on 10^5 random boxes.
 #include "BoxAxes.h"
 #include "MathDefinitions.h"
 
@@ -61,6 +62,52 @@ TEST(BoxAxes, EveryRowIsNormalisedExactlyAsVectorNormalizeDoes) {
                 ASSERT_NEAR(std::sqrt(x * x + y * y + z * z), 1.0, 1e-6) << "matrix " << n << " row " << i;
             }
         }
+    }
+}
+
+TEST(BoxAxes, BoxBoundsAreTheGeneralBoundsAndHoldEveryCorner) {
+    std::mt19937 gen(20261127);
+    std::uniform_real_distribution<float> unit(-1.0f, 1.0f);
+    std::uniform_int_distribution<int> exponent(-20, 20);
+    for (int n = 0; n < 100000; ++n) {
+        gcol::WorldShape s;
+        s.kind = gcol::ShapeKind::Box;
+        gcol::BoxShape& b = s.box;
+        const float scale = std::ldexp(1.0f, exponent(gen));
+        b.centre = Vector(unit(gen), unit(gen), unit(gen)) * scale;
+        b.halfExtents = Vector(std::fabs(unit(gen)), std::fabs(unit(gen)), std::fabs(unit(gen))) * scale;
+        const Matrix r = rotate(Vector(unit(gen), unit(gen), unit(gen)), 10.0f * unit(gen));
+        gcol::unitAxes(r, b.axis);
+        if (n % 7 == 0) b.axis[n % 3] = -b.axis[n % 3]; // signed zeros and negative components too
+        gcol::Aabb fast, general;
+        gcol::boxBounds(b, fast);
+        ASSERT_TRUE(gcol::shapeAabb(s, general));
+        ASSERT_TRUE(sameBits(fast.min, general.min) && sameBits(fast.max, general.max)) << "box " << n;
+        // Every corner inside, to float rounding of the sums (a few ulps of the largest term).
+        const double slack = 1e-6 * (std::fabs(b.centre.x) + std::fabs(b.centre.y) + std::fabs(b.centre.z) +
+                                     b.halfExtents.x + b.halfExtents.y + b.halfExtents.z);
+        double reach[3] = {0, 0, 0}; // how far the farthest corner is from the centre along x, y, z
+        for (int corner = 0; corner < 8; ++corner) {
+            const double sx = corner & 1 ? 1 : -1, sy = corner & 2 ? 1 : -1, sz = corner & 4 ? 1 : -1;
+            const double p[3] = {b.centre.x + sx * b.halfExtents.x * b.axis[0].x +
+                                     sy * b.halfExtents.y * b.axis[1].x + sz * b.halfExtents.z * b.axis[2].x,
+                                 b.centre.y + sx * b.halfExtents.x * b.axis[0].y +
+                                     sy * b.halfExtents.y * b.axis[1].y + sz * b.halfExtents.z * b.axis[2].y,
+                                 b.centre.z + sx * b.halfExtents.x * b.axis[0].z +
+                                     sy * b.halfExtents.y * b.axis[1].z + sz * b.halfExtents.z * b.axis[2].z};
+            const double lo[3] = {fast.min.x, fast.min.y, fast.min.z},
+                         hi[3] = {fast.max.x, fast.max.y, fast.max.z};
+            const double c[3] = {b.centre.x, b.centre.y, b.centre.z};
+            for (int k = 0; k < 3; ++k) {
+                ASSERT_GE(p[k], lo[k] - slack) << "box " << n << " corner " << corner;
+                ASSERT_LE(p[k], hi[k] + slack) << "box " << n << " corner " << corner;
+                reach[k] = std::fmax(reach[k], std::fabs(p[k] - c[k]));
+            }
+        }
+        // And tight: the farthest corner reaches each face of the bounds.
+        ASSERT_NEAR(reach[0], 0.5 * (double(fast.max.x) - fast.min.x), slack) << "box " << n;
+        ASSERT_NEAR(reach[1], 0.5 * (double(fast.max.y) - fast.min.y), slack) << "box " << n;
+        ASSERT_NEAR(reach[2], 0.5 * (double(fast.max.z) - fast.min.z), slack) << "box " << n;
     }
 }
 
