@@ -259,7 +259,10 @@ bool SimpleCollisionSpace::gatherEntry(Entry& e, bool continuous) {
     }
     const RBDynamics* d = body ? &body->getDynamics() : nullptr;
     c.dynamics = d;
-    const RBDynamics* root = d ? d->attachmentRoot() : nullptr;
+    // Its root: itself when it had no parent at the last call and no attachment changed since (the links lie
+    // at the far end of RBDynamics, a cache line read for nothing).
+    const RBDynamics* root = d && (!m_linksUnchanged || c.unlinked != d) ? d->attachmentRoot() : d;
+    c.unlinked = root == d ? d : nullptr;
     const unsigned version = g->shapeVersion();
     bool same = c.valid && e.body == body && c.shapeVersion == version; // never for a plane
     if (!(same && c.raw && root == d && sameRaw(c, *d))) {
@@ -487,6 +490,9 @@ inline void fetchAhead(const void* p) {
 } // namespace
 
 void SimpleCollisionSpace::gatherEntries(bool continuous) {
+    const unsigned long long links = RBDynamics::attachmentEpoch();
+    m_linksUnchanged = links == m_linksEpoch;
+    m_linksEpoch = links;
     m_relaid = m_layoutDirty;
     if (m_layoutDirty) layOutEntries();
     m_changed.clear();

@@ -150,6 +150,7 @@ public:
             gcol::Aabb tight;                     // its shapes' box at the pose
             int capacity = 0;                     // shapes m_shapes holds for it from first on
             const RBDynamics* dynamics = nullptr; // its body's at the last call (only to fetch ahead)
+            const RBDynamics* unlinked = nullptr; // the same, if it had no parent then (else nullptr)
         } cache;
         int first = 0, last = 0;   // its shapes in m_shapes
         Vector origin, prevOrigin; // the previous pose: set (and read) only in a call with sampling on
@@ -293,7 +294,11 @@ private:
     bool m_restChanged = false;     // this call: something a sleeping body may rest on moved, changed or left
     bool m_restingNewcomer = false; // this call: a resting geometry (fixed, bodiless) joined the space
     bool m_layoutDirty = true;      // members were added or removed, or m_shapes is mostly waste
-    size_t m_shapeWaste = 0;        // shapes in m_shapes no entry owns
+    // RBDynamics::attachmentEpoch at the last gathering, and whether it is the same now
+    // (Entry::Cache::unlinked holds).
+    unsigned long long m_linksEpoch = 0;
+    bool m_linksUnchanged = false;
+    size_t m_shapeWaste = 0; // shapes in m_shapes no entry owns
     // Scratch reused between calls.
     std::vector<gcol::WorldShape> m_scratchA, m_scratchB;
     const std::pair<int, int>* m_pairs =

@@ -33,7 +33,7 @@ bool SimpleCollisionSpace::rayCast(const Vector& origin, const Vector& direction
     float best = maxDistance;
     bool found = false;
     std::vector<gcol::WorldShape>& shapes = m_scratchA;
-    m_broadphase->rayCandidates(m_members, origin, dir, maxDistance, m_candidates);
+    m_broadphase->rayCandidates(m_members, m_entries, origin, dir, maxDistance, m_candidates);
     for (CollisionGeometry* g : m_candidates) {
         iCollisionGeometry* ig = g->asInterface();
         if (!queryShapes(ig, shapes)) continue;
@@ -88,7 +88,7 @@ size_t SimpleCollisionSpace::overlapSphere(const Vector& centre, float radius,
     q.sphere.radius = radius;
     gcol::Aabb box;
     gcol::shapeAabb(q, box);
-    m_broadphase->overlapCandidates(m_members, box, m_candidates);
+    m_broadphase->overlapCandidates(m_members, m_entries, box, m_candidates);
     return overlapWith(*this, m_candidates, q, m_scratchA, &SimpleCollisionSpace::queryShapes, out);
 }
 
@@ -110,7 +110,7 @@ size_t SimpleCollisionSpace::overlapBox(const Vector& centre, const Matrix& orie
     q.box.halfExtents = halfExtents;
     gcol::Aabb box;
     gcol::shapeAabb(q, box);
-    m_broadphase->overlapCandidates(m_members, box, m_candidates);
+    m_broadphase->overlapCandidates(m_members, m_entries, box, m_candidates);
     return overlapWith(*this, m_candidates, q, m_scratchA, &SimpleCollisionSpace::queryShapes, out);
 }
 

@@ -141,12 +141,14 @@ void SweepAndPrune::sweep() {
     }
 }
 
-void SweepAndPrune::overlapCandidates(const std::vector<CollisionGeometry*>& all, const gcol::Aabb&,
+void SweepAndPrune::overlapCandidates(const std::vector<CollisionGeometry*>& all,
+                                      const std::vector<SimpleCollisionSpace::Entry>&, const gcol::Aabb&,
                                       std::vector<CollisionGeometry*>& out) {
     out.assign(all.begin(), all.end());
 }
 
-void SweepAndPrune::rayCandidates(const std::vector<CollisionGeometry*>& all, const Vector&, const Vector&,
-                                  float, std::vector<CollisionGeometry*>& out) {
-    overlapCandidates(all, gcol::Aabb(), out);
+void SweepAndPrune::rayCandidates(const std::vector<CollisionGeometry*>& all,
+                                  const std::vector<SimpleCollisionSpace::Entry>&, const Vector&,
+                                  const Vector&, float, std::vector<CollisionGeometry*>& out) {
+    out.assign(all.begin(), all.end());
 }

@@ -51,12 +51,14 @@ int TreeBroadphase::proxyOf(CollisionGeometry* g) {
         p = int(m_proxies.size());
         m_proxies.emplace_back();
         m_exact.emplace_back();
+        m_checked.emplace_back();
     } else {
         p = m_freeProxies.back();
         m_freeProxies.pop_back();
     }
     Proxy& x = m_proxies[size_t(p)];
     x = Proxy();
+    m_checked[size_t(p)].valid = false;
     x.g = g;
     x.order = st.order;
     x.used = true;
@@ -78,6 +80,8 @@ void TreeBroadphase::refit(int p, const gcol::Aabb& tight) {
     }
     x.fat = fat;
     x.stale = true;
+    x.holdsEntry = false;
+    m_checked[size_t(p)].valid = false;
     if (!x.moved) {
         x.moved = true;
         m_moveBuffer.push_back(p);
@@ -174,9 +178,7 @@ void TreeBroadphase::track(const SimpleCollisionSpace::Entry& e, int i) {
     x.entry = i;
     x.stamp = m_stamp;
     if ((x.leaf == gcol::DynamicTree::kNull && !x.stale) || !gcol::contains(x.fat, e.box)) refit(p, e.box);
-    x.origin = e.origin;
-    x.rotation = e.rotation;
-    x.shapeVersion = e.g->shapeVersion();
+    x.holdsEntry = true;
     Exact& ex = m_exact[size_t(p)];
     ex.lo[0] = e.box.min.x;
     ex.lo[1] = e.box.min.y;
@@ -293,7 +295,27 @@ void TreeBroadphase::updatePairs() {
     m_dead.clear();
 }
 
-void TreeBroadphase::syncForQuery(const std::vector<CollisionGeometry*>& all) {
+bool TreeBroadphase::stillInside(const CollisionGeometry* g,
+                                 const std::vector<SimpleCollisionSpace::Entry>& entries, const Vector& o,
+                                 const Matrix& r) const {
+    const CollisionGeometry::SpaceState& st = g->spaceState();
+    if (st.proxy < 0) return false;
+    const Proxy& x = m_proxies[size_t(st.proxy)];
+    if (x.leaf == gcol::DynamicTree::kNull) return false;
+    const unsigned version = g->shapeVersion();
+    if (x.holdsEntry && st.entry >= 0 && size_t(st.entry) < entries.size()) {
+        // The entry the proxy was last tracked from: its box was made from its pose and shape version.
+        const SimpleCollisionSpace::Entry& e = entries[size_t(st.entry)];
+        if (e.g == g && e.active && e.cache.valid && e.cache.shapeVersion == version && e.origin == o &&
+            e.rotation == r)
+            return true;
+    }
+    const Checked& c = m_checked[size_t(st.proxy)];
+    return c.valid && c.shapeVersion == version && c.origin == o && c.rotation == r;
+}
+
+void TreeBroadphase::syncForQuery(const std::vector<CollisionGeometry*>& all,
+                                  const std::vector<SimpleCollisionSpace::Entry>& entries) {
     m_queryPlanes.clear();
     for (CollisionGeometry* g : all) {
         if (g->isPlane()) {
@@ -305,12 +327,7 @@ void TreeBroadphase::syncForQuery(const std::vector<CollisionGeometry*>& all) {
         Vector o;
         Matrix r(1);
         if (!g->currentPose(o, r)) continue;
-        if (st.proxy >= 0) {
-            const Proxy& x = m_proxies[size_t(st.proxy)];
-            if (x.leaf != gcol::DynamicTree::kNull && x.origin == o && x.rotation == r &&
-                x.shapeVersion == g->shapeVersion())
-                continue; // where its fat box was made (or checked): still inside
-        }
+        if (stillInside(g, entries, o, r)) continue; // where its fat box was made (or checked)
         m_shapes.clear();
         g->worldShapes(o, r, m_shapes);
         if (m_shapes.empty()) continue;
@@ -318,9 +335,11 @@ void TreeBroadphase::syncForQuery(const std::vector<CollisionGeometry*>& all) {
         const int p = proxyOf(g);
         Proxy& x = m_proxies[size_t(p)];
         if ((x.leaf == gcol::DynamicTree::kNull && !x.stale) || !gcol::contains(x.fat, box)) refit(p, box);
-        x.origin = o;
-        x.rotation = r;
-        x.shapeVersion = g->shapeVersion();
+        Checked& checked = m_checked[size_t(p)];
+        checked.origin = o;
+        checked.rotation = r;
+        checked.shapeVersion = g->shapeVersion();
+        checked.valid = true;
     }
     applyMoves();
 }
@@ -334,18 +353,21 @@ void TreeBroadphase::gatherCandidates(std::vector<CollisionGeometry*>& out) {
     });
 }
 
-void TreeBroadphase::overlapCandidates(const std::vector<CollisionGeometry*>& all, const gcol::Aabb& box,
-                                       std::vector<CollisionGeometry*>& out) {
-    syncForQuery(all);
+void TreeBroadphase::overlapCandidates(const std::vector<CollisionGeometry*>& all,
+                                       const std::vector<SimpleCollisionSpace::Entry>& entries,
+                                       const gcol::Aabb& box, std::vector<CollisionGeometry*>& out) {
+    syncForQuery(all, entries);
     m_hits.clear();
     ++m_treeQueries;
     m_tree.query(box, [this](int p) { m_hits.push_back(p); });
     gatherCandidates(out);
 }
 
-void TreeBroadphase::rayCandidates(const std::vector<CollisionGeometry*>& all, const Vector& origin,
-                                   const Vector& dir, float maxT, std::vector<CollisionGeometry*>& out) {
-    syncForQuery(all);
+void TreeBroadphase::rayCandidates(const std::vector<CollisionGeometry*>& all,
+                                   const std::vector<SimpleCollisionSpace::Entry>& entries,
+                                   const Vector& origin, const Vector& dir, float maxT,
+                                   std::vector<CollisionGeometry*>& out) {
+    syncForQuery(all, entries);
     m_hits.clear();
     ++m_treeQueries;
     m_tree.rayCast(origin, dir, maxT, [this](int p) { m_hits.push_back(p); });

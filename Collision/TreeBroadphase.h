@@ -33,10 +33,12 @@ public:
 
     PairList findPairs(const std::vector<SimpleCollisionSpace::Entry>& entries,
                        const std::vector<int>* changed) override;
-    void overlapCandidates(const std::vector<CollisionGeometry*>& all, const gcol::Aabb& box,
+    void overlapCandidates(const std::vector<CollisionGeometry*>& all,
+                           const std::vector<SimpleCollisionSpace::Entry>& entries, const gcol::Aabb& box,
                            std::vector<CollisionGeometry*>& out) override;
-    void rayCandidates(const std::vector<CollisionGeometry*>& all, const Vector& origin, const Vector& dir,
-                       float maxT, std::vector<CollisionGeometry*>& out) override;
+    void rayCandidates(const std::vector<CollisionGeometry*>& all,
+                       const std::vector<SimpleCollisionSpace::Entry>& entries, const Vector& origin,
+                       const Vector& dir, float maxT, std::vector<CollisionGeometry*>& out) override;
     void forget(CollisionGeometry* g) override;
     // Fat boxes made from now on get the new margin (the ones made already are still conservative).
     void setLengthUnit(float unitsPerMetre) override { m_margin = kMargin * unitsPerMetre; }
@@ -48,18 +50,17 @@ public:
 
 private:
     float m_margin = kMargin;
-    struct Proxy {
+    // One cache line: what a call reads of every proxy whose box changed.
+    struct alignas(64) Proxy {
         gcol::Aabb fat;
-        Vector origin; // the pose and shape version at which fat was known to hold the tight box
-        Matrix rotation = Matrix(1);
-        unsigned shapeVersion = 0;
         unsigned long long order = 0; // the geometry's join order (SpaceState::order)
         CollisionGeometry* g = nullptr;
         int leaf = gcol::DynamicTree::kNull;
         int entry = -1;     // its entry in the current call
         unsigned stamp = 0; // the call that last saw it
         bool moved = false, dead = false, used = false;
-        bool stale = false; // fat changed; the tree's leaf not yet
+        bool stale = false;      // fat changed; the tree's leaf not yet
+        bool holdsEntry = false; // fat holds the box of its entry (its pose and shapes as the space has them)
     };
     struct Pair {
         // The join orders, lower in the high half: sorted by key, pairs follow the space's order. (Join
@@ -91,13 +92,26 @@ private:
     unsigned mortonKey(int p, const gcol::Aabb& bounds, float scale) const;
     void kill(int p);
     void updatePairs();
-    void syncForQuery(const std::vector<CollisionGeometry*>& all);
+    // A pose at which a query found the fat box holding a proxy's shapes (kept out of Proxy: only queries
+    // read or write it; a new fat box voids it).
+    struct Checked {
+        Vector origin;
+        Matrix rotation = Matrix(1);
+        unsigned shapeVersion = 0;
+        bool valid = false;
+    };
+    void syncForQuery(const std::vector<CollisionGeometry*>& all,
+                      const std::vector<SimpleCollisionSpace::Entry>& entries);
+    // g's proxy's fat box holds g's shapes at (o, r): it held its entry's box, and the entry is at that pose.
+    bool stillInside(const CollisionGeometry* g, const std::vector<SimpleCollisionSpace::Entry>& entries,
+                     const Vector& o, const Matrix& r) const;
     void gatherCandidates(std::vector<CollisionGeometry*>& out);
 
     gcol::DynamicTree m_tree;
     std::vector<Proxy> m_proxies;
-    std::vector<Exact> m_exact;   // per proxy
-    std::vector<EntryPair> m_out; // its first m_outCount are this call's pairs (it never shrinks)
+    std::vector<Exact> m_exact;     // per proxy
+    std::vector<Checked> m_checked; // per proxy
+    std::vector<EntryPair> m_out;   // its first m_outCount are this call's pairs (it never shrinks)
     size_t m_outCount = 0;
     bool m_outValid = false;
     std::vector<int> m_freeProxies, m_dead;

@@ -8,7 +8,14 @@
 #include "MathEigen.h"
 #include "iUtilities.h"
 
+#include <atomic>
 #include <cmath>
+
+namespace {
+std::atomic<unsigned long long> g_attachmentEpoch{0};
+} // namespace
+
+unsigned long long RBDynamics::attachmentEpoch() { return g_attachmentEpoch.load(std::memory_order_relaxed); }
 
 RBDynamics::RBDynamics() : m_inertia(getSphereInertiaTensor(1.0f, 1.0f)), m_inverseInertia(1) {
     m_inverseInertia = m_inertia.inverse();
@@ -396,6 +403,7 @@ float RBDynamics::getCompositeMass() const {
 
 void RBDynamics::unlinkFromParent() {
     if (!m_parent) return;
+    g_attachmentEpoch.fetch_add(1, std::memory_order_relaxed);
     RBDynamics** link = &m_parent->m_firstChild;
     while (*link && *link != this) link = &(*link)->m_nextSibling;
     if (*link) *link = m_nextSibling;
@@ -423,6 +431,7 @@ void RBDynamics::attachTo(RBDynamics* p) {
         // Cleaned: the transpose is the inverse only of an exact rotation, and the float error of an
         // unclean one doubled with every level of a chain built by attaching (a 1,000-deep one overflowed).
         orientation = orthoNormalize(worldRot * parentRot.transpose());
+        g_attachmentEpoch.fetch_add(1, std::memory_order_relaxed);
         m_parent = p;
         m_nextSibling = p->m_firstChild;
         p->m_firstChild = this;

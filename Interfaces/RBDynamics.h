@@ -178,6 +178,10 @@ struct RBDynamics {
         while (r->m_parent) r = r->m_parent;
         return const_cast<RBDynamics*>(r);
     }
+    // A count of the attachments and detachments of every body so far (in any thread): while it stays the
+    // same, every body's attachmentRoot() is what it was, so a cache of them holds (the collision space
+    // reads a body's root without touching the links at the end of this struct).
+    static unsigned long long attachmentEpoch();
     // The seed: the mass of the body at the root of the attachment chain (its own mass when unattached).
     float getMass() const;
     // Mass of the whole composite rooted at attachmentRoot() (INFINITE_MASS if any part is infinite).
