@@ -141,3 +141,42 @@ TEST(Attachment, CompositeFallsAsOneAndDetachesSeamlessly) {
     h.run(100); // both fall on, separately
     EXPECT_NEAR(b.velocity.y, a.velocity.y, 1e-5f);
 }
+
+// attachmentEpoch: a cache of roots holds exactly while it stands. Every change of a link moves it (attach,
+// detach, a parent's or a child's destruction); what changes no link (a refused attachment, detaching a root,
+// moving a body) leaves it.
+TEST(Attachment, EveryLinkChangeAndOnlyOneMovesTheAttachmentEpoch) {
+    RBDynamics a, b, c;
+    auto epoch = [] { return RBDynamics::attachmentEpoch(); };
+    unsigned long long before = epoch();
+    b.attachTo(&a);
+    EXPECT_NE(epoch(), before);
+    EXPECT_EQ(b.attachmentRoot(), &a);
+    before = epoch();
+    a.attachTo(&b); // a descendant: refused, no link changes
+    b.attachTo(&b);
+    c.attachTo(nullptr); // already a root
+    c.position = Vector(1, 2, 3);
+    EXPECT_EQ(epoch(), before);
+    EXPECT_EQ(a.attachmentRoot(), &a);
+    c.attachTo(&b);
+    EXPECT_NE(epoch(), before);
+    EXPECT_EQ(c.attachmentRoot(), &a);
+    before = epoch();
+    c.attachTo(nullptr);
+    EXPECT_NE(epoch(), before);
+    EXPECT_EQ(c.attachmentRoot(), &c);
+    {
+        RBDynamics child;
+        child.attachTo(&c);
+        before = epoch();
+    } // the child goes: its link with it
+    EXPECT_NE(epoch(), before);
+    {
+        RBDynamics parent;
+        c.attachTo(&parent);
+        before = epoch();
+    } // the parent goes: c is a root again
+    EXPECT_NE(epoch(), before);
+    EXPECT_EQ(c.attachmentRoot(), &c);
+}
