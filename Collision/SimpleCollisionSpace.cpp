@@ -505,7 +505,11 @@ void SimpleCollisionSpace::gatherEntries(bool continuous) {
         // otherwise mostly waiting for them). A hint only: an address no longer valid is never read.
         if (i + kFetchAhead < n) {
             const Entry& ahead = m_entries[size_t(i + kFetchAhead)];
-            fetchAhead(ahead.g);
+            // The geometry's first 190 bytes: its filter, body and space state (CollisionGeometry.h), its
+            // previous pose, and the fields of its shape that follow (a box's half extents). Alternated with
+            // the first line alone, on 10,000 boxes after a move: 0.96-1.2 ms against 1.10-1.27.
+            const char* g = reinterpret_cast<const char*>(ahead.g);
+            for (int offset : {0, 48, 96, 144, 188}) fetchAhead(g + offset); // every line it spans
             fetchAhead(ahead.body);
             if (const char* d = reinterpret_cast<const char*>(ahead.cache.dynamics)) {
                 fetchAhead(d);
