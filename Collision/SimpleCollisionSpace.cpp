@@ -189,12 +189,14 @@ inline void shapeBounds(const gcol::WorldShape& s, gcol::Aabb& out) {
 // A body without a parent is at a pose made from its position, the rotation rows of its orientation and
 // its centre of mass alone (RBDynamics::getWorldOrigin, getWorldOrientation): the same inputs, bit for bit,
 // give the same pose.
+// (The rotation's rows are those of the entry's rotation, which rawPose copied from the orientation.)
 const float* row(const Matrix& m, int i) { return m.data() + 4 * i; }
-bool sameRaw(const SimpleCollisionSpace::Entry::Cache& c, const RBDynamics& d) {
+bool sameRaw(const SimpleCollisionSpace::Entry& e, const RBDynamics& d) {
+    const SimpleCollisionSpace::Entry::Cache& c = e.cache;
     return sameBits(c.rawPosition, d.position) && sameBits(c.rawCom, d.com) &&
-           sameWords<3>(&c.rawRows[0], row(d.orientation, 0)) &&
-           sameWords<3>(&c.rawRows[1], row(d.orientation, 1)) &&
-           sameWords<3>(&c.rawRows[2], row(d.orientation, 2));
+           sameWords<3>(row(e.rotation, 0), row(d.orientation, 0)) &&
+           sameWords<3>(row(e.rotation, 1), row(d.orientation, 1)) &&
+           sameWords<3>(row(e.rotation, 2), row(d.orientation, 2));
 }
 // o.isFinite() && r.isFinite() for a rotation (its fourth row and column 0 0 0 1), at once: x - x is 0 for
 // a finite x and NaN for an infinite or NaN one, and a sum of those is 0 only when every one is.
@@ -223,8 +225,6 @@ bool rawPose(const RBDynamics& d, Vector& origin, Matrix& rotation) {
 void storeRaw(SimpleCollisionSpace::Entry::Cache& c, const RBDynamics& d) {
     c.rawPosition = d.position;
     c.rawCom = d.com;
-    for (int i = 0; i < 3; ++i)
-        c.rawRows[i] = Vector(row(d.orientation, i)[0], row(d.orientation, i)[1], row(d.orientation, i)[2]);
 }
 
 } // namespace
@@ -265,7 +265,7 @@ bool SimpleCollisionSpace::gatherEntry(Entry& e, bool continuous) {
     c.unlinked = root == d ? d : nullptr;
     const unsigned version = g->shapeVersion();
     bool same = c.valid && e.body == body && c.shapeVersion == version; // never for a plane
-    if (!(same && c.raw && root == d && sameRaw(c, *d))) {
+    if (!(same && c.raw && root == d && sameRaw(e, *d))) {
         Vector origin;
         Matrix rotation(1);
         if (!(d && root == d ? rawPose(*d, origin, rotation) : g->currentPose(origin, rotation))) {

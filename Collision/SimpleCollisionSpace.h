@@ -138,7 +138,8 @@ public:
         // What the shapes and boxes were made from (the space's; a broadphase ignores it).
         struct Cache {
             bool valid = false; // shapes, tight, minDim and bound hold for origin, rotation, version, body
-            bool raw = false;   // the body has no parent, and rawPosition.. are its pose inputs then
+            bool raw =
+                false; // the body has no parent: its pose came from rawPosition, rawCom and rotation's rows
             bool prevIsPose = false;  // SpaceState::previous* were last written from origin and rotation
             bool prevCurrent = false; // this call: SpaceState::previous* hold origin and rotation already
             bool prevIsSelf = false;  // prevOrigin and prevRotation are origin and rotation, bit for bit
@@ -146,7 +147,7 @@ public:
             bool sized = false; // minDim and bound hold for sizedVersion
             unsigned shapeVersion = 0, sizedVersion = 0;
             float bound = 0.0f, selfAngle = 0.0f; // bounding radius; rotationAngle(rotation, rotation)
-            Vector rawPosition, rawCom, rawRows[3];
+            Vector rawPosition, rawCom;
             gcol::Aabb tight;                     // its shapes' box at the pose
             int capacity = 0;                     // shapes m_shapes holds for it from first on
             const RBDynamics* dynamics = nullptr; // its body's at the last call (only to fetch ahead)

@@ -172,8 +172,19 @@ void TreeBroadphase::forget(CollisionGeometry* g) {
     if (g->spaceState().proxy >= 0) kill(g->spaceState().proxy);
 }
 
+int TreeBroadphase::knownProxy(const SimpleCollisionSpace::Entry& e, int i) const {
+    if (size_t(i) < m_entryProxy.size()) {
+        const int p = m_entryProxy[size_t(i)];
+        if (p >= 0 && m_proxies[size_t(p)].g == e.g) return p; // (a proxy names its geometry until it dies)
+    }
+    return e.g->spaceState().proxy;
+}
+
 void TreeBroadphase::track(const SimpleCollisionSpace::Entry& e, int i) {
-    const int p = proxyOf(e.g);
+    int p = knownProxy(e, i);
+    if (p < 0) p = proxyOf(e.g);
+    if (m_entryProxy.size() <= size_t(i)) m_entryProxy.resize(size_t(i) + 1, -1);
+    m_entryProxy[size_t(i)] = p;
     Proxy& x = m_proxies[size_t(p)];
     x.entry = i;
     x.stamp = m_stamp;
@@ -216,7 +227,7 @@ Broadphase::PairList TreeBroadphase::findPairs(const std::vector<SimpleCollision
                 lists = true;
                 continue;
             }
-            const int p = e.g->spaceState().proxy;
+            const int p = knownProxy(e, i);
             if (!e.active) { // it leaves
                 if (p >= 0) kill(p);
                 lists = true;

@@ -85,6 +85,9 @@ private:
     void track(const SimpleCollisionSpace::Entry& e, int i);
     void listEntries(const std::vector<SimpleCollisionSpace::Entry>& entries); // m_planes, m_bounded
     int proxyOf(CollisionGeometry* g);
+    // The proxy of entry i's geometry (-1: none), remembered by entry index: the geometry's space state is a
+    // cache line the call has no other need of.
+    int knownProxy(const SimpleCollisionSpace::Entry& e, int i) const;
     // Gives proxy p the box tight (not inside its fat box): a new fat box, into the move buffer.
     void refit(int p, const gcol::Aabb& tight);
     // Puts the move buffer in Morton order and brings the tree's leaves up to date with the fat boxes.
@@ -111,6 +114,7 @@ private:
     std::vector<Proxy> m_proxies;
     std::vector<Exact> m_exact;     // per proxy
     std::vector<Checked> m_checked; // per proxy
+    std::vector<int> m_entryProxy;  // per entry index, its geometry's proxy when last tracked
     std::vector<EntryPair> m_out;   // its first m_outCount are this call's pairs (it never shrinks)
     size_t m_outCount = 0;
     bool m_outValid = false;
