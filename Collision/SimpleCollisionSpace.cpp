@@ -198,28 +198,34 @@ bool sameRaw(const SimpleCollisionSpace::Entry& e, const RBDynamics& d) {
            sameWords<3>(row(e.rotation, 1), row(d.orientation, 1)) &&
            sameWords<3>(row(e.rotation, 2), row(d.orientation, 2));
 }
-// o.isFinite() && r.isFinite() for a rotation (its fourth row and column 0 0 0 1), at once: x - x is 0 for
-// a finite x and NaN for an infinite or NaN one, and a sum of those is 0 only when every one is.
-bool finitePose(const Vector& o, const Matrix& r) {
+// CollisionGeometry::currentPose of a geometry on d, a body without a parent: the same operations on the
+// same inputs (RBDynamics::getWorldOrigin, getWorldOrientation), without the copies. On SSE2 the rotation's
+// rows go from the orientation to rotation in registers (built on the stack a float at a time and read back
+// sixteen bytes at a time, they stalled the load: a third of gathering a moved box, perf), and o.isFinite()
+// && r.isFinite() is one test: x - x is 0 for a finite x and NaN for an infinite or NaN one, and a sum of
+// those is 0 only when every one is.
+bool rawPose(const RBDynamics& d, Vector& origin, Matrix& rotation) {
+    const Vector o = d.position - d.orientation.direction(d.com);
 #if defined(__SSE2__)
-    const float* m = r.data();
-    const __m128 x = _mm_loadu_ps(m), y = _mm_loadu_ps(m + 4), z = _mm_loadu_ps(m + 8);
+    const float* m = d.orientation.data();
+    const __m128 xyz = _mm_castsi128_ps(_mm_set_epi32(0, -1, -1, -1)); // (the fourth column is 0: +0 bits)
+    const __m128 x = _mm_and_ps(xyz, _mm_loadu_ps(m)), y = _mm_and_ps(xyz, _mm_loadu_ps(m + 4)),
+                 z = _mm_and_ps(xyz, _mm_loadu_ps(m + 8));
     const __m128 p = _mm_set_ps(0.0f, o.z, o.y, o.x);
     const __m128 sum = _mm_add_ps(_mm_add_ps(_mm_sub_ps(x, x), _mm_sub_ps(y, y)),
                                   _mm_add_ps(_mm_sub_ps(z, z), _mm_sub_ps(p, p)));
-    return _mm_movemask_ps(_mm_cmpeq_ps(sum, _mm_setzero_ps())) == 0xF;
+    if (_mm_movemask_ps(_mm_cmpeq_ps(sum, _mm_setzero_ps())) != 0xF) return false;
+    float* r = rotation.data();
+    _mm_storeu_ps(r, x);
+    _mm_storeu_ps(r + 4, y);
+    _mm_storeu_ps(r + 8, z);
+    _mm_storeu_ps(r + 12, _mm_set_ps(1.0f, 0.0f, 0.0f, 0.0f));
 #else
-    return o.isFinite() && r.isFinite();
-#endif
-}
-// CollisionGeometry::currentPose of a geometry on d, a body without a parent: the same operations on the
-// same inputs (RBDynamics::getWorldOrigin, getWorldOrientation), without the copies.
-bool rawPose(const RBDynamics& d, Vector& origin, Matrix& rotation) {
-    const Vector o = d.position - d.orientation.direction(d.com);
     const Matrix r = d.orientation.rotation();
-    if (!finitePose(o, r)) return false;
-    origin = o;
+    if (!o.isFinite() || !r.isFinite()) return false;
     rotation = r;
+#endif
+    origin = o;
     return true;
 }
 void storeRaw(SimpleCollisionSpace::Entry::Cache& c, const RBDynamics& d) {
