@@ -7,6 +7,7 @@
 
 #include "MathDeclarations.h"
 #include "Shapes.h"
+#include "VectorRegister.h"
 
 #if defined(__SSE2__)
 #include <emmintrin.h>
@@ -27,11 +28,9 @@ inline void unitAxes(const Matrix& r, Vector axis[3]) {
     z = _mm_and_ps(positive, _mm_div_ps(z, length));
     w = _mm_setzero_ps();
     _MM_TRANSPOSE4_PS(x, y, z, w); // back to one row an axis
-    alignas(16) float rows[3][4];
-    _mm_store_ps(rows[0], x);
-    _mm_store_ps(rows[1], y);
-    _mm_store_ps(rows[2], z);
-    for (int i = 0; i < 3; ++i) axis[i] = Vector(rows[i][0], rows[i][1], rows[i][2]);
+    store3(axis[0], x);
+    store3(axis[1], y);
+    store3(axis[2], z);
 #else
     axis[0] = r.direction('x').normalize();
     axis[1] = r.direction('y').normalize();
@@ -46,20 +45,17 @@ inline void unitAxes(const Matrix& r, Vector axis[3]) {
 inline void boxBounds(const BoxShape& b, Aabb& out) {
     const Vector& h = b.halfExtents;
 #if defined(__SSE2__)
-    // Each load takes the next float too (lane 3, never used): the fields follow one another in BoxShape.
+    // (The shape was most likely written just now: read as it was written, VectorRegister.h.)
     const __m128 magnitude = _mm_castsi128_ps(_mm_set1_epi32(0x7FFFFFFF));
-    const __m128 a0 = _mm_and_ps(magnitude, _mm_loadu_ps(&b.axis[0].x));
-    const __m128 a1 = _mm_and_ps(magnitude, _mm_loadu_ps(&b.axis[1].x));
-    const __m128 a2 = _mm_and_ps(magnitude, _mm_loadu_ps(&b.axis[2].x));
+    const __m128 a0 = _mm_and_ps(magnitude, load3(b.axis[0]));
+    const __m128 a1 = _mm_and_ps(magnitude, load3(b.axis[1]));
+    const __m128 a2 = _mm_and_ps(magnitude, load3(b.axis[2]));
     const __m128 e =
         _mm_add_ps(_mm_add_ps(_mm_mul_ps(_mm_set1_ps(h.x), a0), _mm_mul_ps(_mm_set1_ps(h.y), a1)),
                    _mm_mul_ps(_mm_set1_ps(h.z), a2));
-    const __m128 c = _mm_loadu_ps(&b.centre.x);
-    alignas(16) float lo[4], hi[4];
-    _mm_store_ps(lo, _mm_sub_ps(c, e));
-    _mm_store_ps(hi, _mm_add_ps(c, e));
-    out.min = Vector(lo[0], lo[1], lo[2]);
-    out.max = Vector(hi[0], hi[1], hi[2]);
+    const __m128 c = load3(b.centre);
+    store3(out.min, _mm_sub_ps(c, e));
+    store3(out.max, _mm_add_ps(c, e));
 #else
     const Vector &a0 = b.axis[0], &a1 = b.axis[1], &a2 = b.axis[2];
     const Vector e(h.x * std::fabs(a0.x) + h.y * std::fabs(a1.x) + h.z * std::fabs(a2.x),

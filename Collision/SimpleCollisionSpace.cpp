@@ -7,6 +7,7 @@
 #include "MathEigen.h"
 #include "SweepAndPrune.h"
 #include "TreeBroadphase.h"
+#include "VectorRegister.h"
 #include "iOctreeCollisionSpace.h"
 #include "iRigidBody.h"
 #include "iSimpleCollisionSpace.h"
@@ -176,7 +177,43 @@ template <size_t N> bool sameWords(const void* a, const void* b) {
 }
 bool sameBits(const Vector& a, const Vector& b) { return sameWords<3>(&a, &b); }
 bool sameBits(const Matrix& a, const Matrix& b) { return sameWords<16>(&a, &b); }
-bool sameBits(const gcol::Aabb& a, const gcol::Aabb& b) { return sameWords<6>(&a, &b); }
+// Boxes are compared and copied a Vector at a time through registers (VectorRegister.h): the one compared is
+// usually just written.
+bool sameBits(const gcol::Aabb& a, const gcol::Aabb& b) {
+#if defined(__SSE2__)
+    return gcol::sameBits3(gcol::load3(a.min), gcol::load3(b.min)) &&
+           gcol::sameBits3(gcol::load3(a.max), gcol::load3(b.max));
+#else
+    return sameWords<6>(&a, &b);
+#endif
+}
+void copyBox(gcol::Aabb& to, const gcol::Aabb& from) {
+#if defined(__SSE2__)
+    gcol::store3(to.min, gcol::load3(from.min));
+    gcol::store3(to.max, gcol::load3(from.max));
+#else
+    to = from;
+#endif
+}
+// A box kept to compare with after it may have been rewritten (in registers on SSE2).
+class HeldBox {
+public:
+#if defined(__SSE2__)
+    explicit HeldBox(const gcol::Aabb& b) : m_min(gcol::load3(b.min)), m_max(gcol::load3(b.max)) {}
+    bool sameAs(const gcol::Aabb& b) const {
+        return gcol::sameBits3(m_min, gcol::load3(b.min)) && gcol::sameBits3(m_max, gcol::load3(b.max));
+    }
+
+private:
+    __m128 m_min, m_max;
+#else
+    explicit HeldBox(const gcol::Aabb& b) : m_box(b) {}
+    bool sameAs(const gcol::Aabb& b) const { return sameBits(m_box, b); }
+
+private:
+    gcol::Aabb m_box;
+#endif
+};
 
 // gcol::shapeAabb of a bounded shape, the box's case written out (BoxAxes.h).
 inline void shapeBounds(const gcol::WorldShape& s, gcol::Aabb& out) {
@@ -372,10 +409,10 @@ bool SimpleCollisionSpace::gatherEntry(Entry& e, bool continuous) {
         e.moved = e.motion > 0.25f * e.minDim;
     }
     if (!e.moved) {
-        if (!sameBits(e.box, c.tight)) e.box = c.tight;
+        if (!sameBits(e.box, c.tight)) copyBox(e.box, c.tight);
         return true;
     }
-    e.box = c.tight;
+    copyBox(e.box, c.tight);
     {
         // Swept bounds: both end poses, inflated by how far rotation can carry a point off that path.
         m_scratchA.clear();
@@ -525,10 +562,10 @@ void SimpleCollisionSpace::gatherEntries(bool continuous) {
         }
         Entry& e = m_entries[size_t(i)];
         const bool was = e.active;
-        const gcol::Aabb box = e.box;
+        const HeldBox box(e.box);
         e.active = gatherEntry(e, continuous);
         if (was && !e.active) m_restChanged = true; // its body gone, or its pose no longer finite
-        if (e.active != was || (e.active && !e.plane && !sameBits(box, e.box))) m_changed.push_back(i);
+        if (e.active != was || (e.active && !e.plane && !box.sameAs(e.box))) m_changed.push_back(i);
     }
 }
 
