@@ -144,7 +144,8 @@ public:
             bool prevCurrent = false; // this call: SpaceState::previous* hold origin and rotation already
             bool prevIsSelf = false;  // prevOrigin and prevRotation are origin and rotation, bit for bit
             bool selfAngleKnown = false;
-            bool sized = false; // minDim and bound hold for sizedVersion
+            bool sized = false;   // minDim and bound hold for sizedVersion
+            bool reposed = false; // its shapes were made anew at the last call (so probably at this one)
             unsigned shapeVersion = 0, sizedVersion = 0;
             float bound = 0.0f, selfAngle = 0.0f; // bounding radius; rotationAngle(rotation, rotation)
             Vector rawPosition, rawCom;
