@@ -117,7 +117,7 @@ public:
 
     // Per-geometry working state, one per member in the members' order (m_entries[i] is m_members[i]'s, and
     // SpaceState::entry names it), kept between calls: a geometry whose pose, shapes and body did not change
-    // since the last call keeps its shapes and box (SimpleCollisionSpace.cpp, gatherEntry).
+    // since the last call keeps its shapes and box (SpaceGather.cpp, gatherEntry).
     // (Laid out for the call where little changed: what every call reads comes first, in three cache lines;
     // the pose and the previous pose only when the body moved.)
     struct alignas(64) Entry {
@@ -138,8 +138,7 @@ public:
         // What the shapes and boxes were made from (the space's; a broadphase ignores it).
         struct Cache {
             bool valid = false; // shapes, tight, minDim and bound hold for origin, rotation, version, body
-            bool raw =
-                false; // the body has no parent: its pose came from rawPosition, rawCom and rotation's rows
+            bool raw = false;   // the body has no parent: its pose came from rawPosition, rawCom, rawRows
             bool prevIsPose = false;  // SpaceState::previous* were last written from origin and rotation
             bool prevCurrent = false; // this call: SpaceState::previous* hold origin and rotation already
             bool prevIsSelf = false;  // prevOrigin and prevRotation are origin and rotation, bit for bit
@@ -148,7 +147,7 @@ public:
             bool reposed = false; // its shapes were made anew at the last call (so probably at this one)
             unsigned shapeVersion = 0, sizedVersion = 0;
             float bound = 0.0f, selfAngle = 0.0f; // bounding radius; rotationAngle(rotation, rotation)
-            Vector rawPosition, rawCom;
+            Vector rawPosition, rawCom, rawRows[3];
             gcol::Aabb tight;                     // its shapes' box at the pose
             int capacity = 0;                     // shapes m_shapes holds for it from first on
             const RBDynamics* dynamics = nullptr; // its body's at the last call (only to fetch ahead)
