@@ -24,6 +24,7 @@
 
 #include "CollisionGeometry.h"
 #include "Narrowphase.h"
+#include "PoseInputs.h"
 #include "iCollisionEvents.h"
 #include "iCollisionQueries.h"
 #include "iCollisionSpace.h"
@@ -138,7 +139,7 @@ public:
         // What the shapes and boxes were made from (the space's; a broadphase ignores it).
         struct Cache {
             bool valid = false; // shapes, tight, minDim and bound hold for origin, rotation, version, body
-            bool raw = false;   // the body has no parent: its pose came from rawPosition, rawCom, rawRows
+            bool raw = false;   // the body had no parent: its pose came from rawInputs
             bool prevIsPose = false;  // SpaceState::previous* were last written from origin and rotation
             bool prevCurrent = false; // this call: SpaceState::previous* hold origin and rotation already
             bool prevIsSelf = false;  // prevOrigin and prevRotation are origin and rotation, bit for bit
@@ -147,9 +148,10 @@ public:
             bool reposed = false; // its shapes were made anew at the last call (so probably at this one)
             unsigned shapeVersion = 0, sizedVersion = 0;
             float bound = 0.0f, selfAngle = 0.0f; // bounding radius; rotationAngle(rotation, rotation)
-            Vector rawPosition, rawCom, rawRows[3];
-            gcol::Aabb tight;                     // its shapes' box at the pose
-            int capacity = 0;                     // shapes m_shapes holds for it from first on
+            gcol::PoseInputs rawInputs; // (in the entry's first three cache lines: a call where nothing moved
+                                        // reads no more of it)
+            gcol::Aabb tight;           // its shapes' box at the pose
+            int capacity = 0;           // shapes m_shapes holds for it from first on
             const RBDynamics* dynamics = nullptr; // its body's at the last call (only to fetch ahead)
             const RBDynamics* unlinked = nullptr; // the same, if it had no parent then (else nullptr)
         } cache;
@@ -196,6 +198,14 @@ private:
         m_contactGeoms.resize(kept);
     }
     bool gatherEntry(Entry& e, bool continuous);
+
+public:
+    // Whether g is at its entry e's pose now, bit for bit, told from its body's raw pose inputs alone (a body
+    // without a parent, as at the last call, with the same shape version): then e's shapes and box still
+    // hold. False when it cannot tell so cheaply. (SpaceGather.cpp; queries ask it of every geometry.)
+    static bool atEntryPose(const Entry& e, const CollisionGeometry& g);
+
+private:
     void moveToEnd(Entry& e, int n);     // e's room in m_shapes, too small for its n shapes, moves
     void layOutEntries();                // one entry per member again, cached ones carried over
     void gatherEntries(bool continuous); // every member's entry brought up to date; m_changed, m_relaid

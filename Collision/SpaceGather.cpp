@@ -5,6 +5,7 @@
 // asked for a few entries ahead.
 #include "BoxAxes.h"
 #include "MathEigen.h"
+#include "PoseInputs.h"
 #include "SimpleCollisionSpace.h"
 #include "VectorRegister.h"
 #include "iRigidBody.h"
@@ -38,25 +39,7 @@ void grow(gcol::Aabb& box, const gcol::Aabb& other) {
 
 namespace {
 
-// Bit for bit (so -0 is not 0, and equal bits are equal values: poses here are finite). Eight bytes at a
-// time, without a copy or a call: every call of the space compares a few of these a geometry.
-template <size_t N> bool sameWords(const void* a, const void* b) {
-    const unsigned char *p = static_cast<const unsigned char*>(a), *q = static_cast<const unsigned char*>(b);
-    std::uint64_t diff = 0;
-    for (size_t i = 0; i < N / 2; ++i) {
-        std::uint64_t x, y;
-        std::memcpy(&x, p + 8 * i, 8);
-        std::memcpy(&y, q + 8 * i, 8);
-        diff |= x ^ y;
-    }
-    if (N % 2) {
-        std::uint32_t x, y;
-        std::memcpy(&x, p + 4 * (N - 1), 4);
-        std::memcpy(&y, q + 4 * (N - 1), 4);
-        diff |= x ^ y;
-    }
-    return diff == 0;
-}
+using gcol::sameWords;
 bool sameBits(const Vector& a, const Vector& b) { return sameWords<3>(&a, &b); }
 bool sameBits(const Matrix& a, const Matrix& b) { return sameWords<16>(&a, &b); }
 // Boxes are compared and copied a Vector at a time through registers (VectorRegister.h): the one compared is
@@ -105,18 +88,6 @@ inline void shapeBounds(const gcol::WorldShape& s, gcol::Aabb& out) {
         gcol::shapeAabb(s, out);
 }
 
-// A body without a parent is at a pose made from its position, the rotation rows of its orientation and
-// its centre of mass alone (RBDynamics::getWorldOrigin, getWorldOrientation): the same inputs, bit for bit,
-// give the same pose.
-// (Its own copy of the rows, not the entry's rotation: they lie in the entry's first three cache lines, which
-// is all a call where nothing moved reads of it.)
-const float* row(const Matrix& m, int i) { return m.data() + 4 * i; }
-bool sameRaw(const SimpleCollisionSpace::Entry::Cache& c, const RBDynamics& d) {
-    return sameBits(c.rawPosition, d.position) && sameBits(c.rawCom, d.com) &&
-           sameWords<3>(&c.rawRows[0], row(d.orientation, 0)) &&
-           sameWords<3>(&c.rawRows[1], row(d.orientation, 1)) &&
-           sameWords<3>(&c.rawRows[2], row(d.orientation, 2));
-}
 // CollisionGeometry::currentPose of a geometry on d, a body without a parent: the same operations on the
 // same inputs (RBDynamics::getWorldOrigin, getWorldOrientation), without the copies. On SSE2 the rotation's
 // rows go from the orientation to rotation in registers (built on the stack a float at a time and read back
@@ -147,14 +118,17 @@ bool rawPose(const RBDynamics& d, Vector& origin, Matrix& rotation) {
     origin = o;
     return true;
 }
-void storeRaw(SimpleCollisionSpace::Entry::Cache& c, const RBDynamics& d) {
-    c.rawPosition = d.position;
-    c.rawCom = d.com;
-    for (int i = 0; i < 3; ++i)
-        c.rawRows[i] = Vector(row(d.orientation, i)[0], row(d.orientation, i)[1], row(d.orientation, i)[2]);
-}
 
 } // namespace
+
+bool SimpleCollisionSpace::atEntryPose(const Entry& e, const CollisionGeometry& g) {
+    const Entry::Cache& c = e.cache;
+    if (e.g != &g || !e.active || !c.valid || !c.raw || !e.body || e.body != g.body() ||
+        c.shapeVersion != g.shapeVersion())
+        return false;
+    const RBDynamics& d = e.body->getDynamics();
+    return !d.attachedTo() && c.rawInputs.same(d);
+}
 
 // Room for n shapes of e at the end of m_shapes: they no longer fit in its own.
 void SimpleCollisionSpace::moveToEnd(Entry& e, int n) {
@@ -193,7 +167,7 @@ bool SimpleCollisionSpace::gatherEntry(Entry& e, bool continuous) {
     const unsigned version = g->shapeVersion();
     bool same = c.valid && e.body == body && c.shapeVersion == version; // never for a plane
     c.reposed = !same;
-    if (!(same && c.raw && root == d && sameRaw(c, *d))) {
+    if (!(same && c.raw && root == d && c.rawInputs.same(*d))) {
         Vector origin;
         Matrix rotation(1);
         if (!(d && root == d ? rawPose(*d, origin, rotation) : g->currentPose(origin, rotation))) {
@@ -211,7 +185,7 @@ bool SimpleCollisionSpace::gatherEntry(Entry& e, bool continuous) {
         e.origin = origin;
         e.rotation = rotation;
         c.raw = d && root == d;
-        if (c.raw) storeRaw(c, *d);
+        if (c.raw) c.rawInputs.store(*d);
     }
     st.reportedBad = false;
     e.body = body;

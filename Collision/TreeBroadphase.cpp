@@ -1,6 +1,7 @@
 // TreeBroadphase.cpp - proxies, the move buffer and the persistent pair set of the octree space
 // (TreeBroadphase.h).
 #include "TreeBroadphase.h"
+#include "iRigidBody.h"
 
 #include <algorithm>
 #include <cmath>
@@ -335,6 +336,17 @@ void TreeBroadphase::syncForQuery(const std::vector<CollisionGeometry*>& all,
         }
         const CollisionGeometry::SpaceState& st = g->spaceState();
         if (!g->body() || st.pendingDelete || st.pendingRemove) continue; // never a query result
+        // At the pose its fat box was made for, or last checked at, known without posing it.
+        const RBDynamics& d = g->body()->getDynamics();
+        const bool raw = !d.attachedTo();
+        if (st.proxy >= 0 && raw && m_proxies[size_t(st.proxy)].leaf != gcol::DynamicTree::kNull) {
+            if (m_proxies[size_t(st.proxy)].holdsEntry && st.entry >= 0 &&
+                size_t(st.entry) < entries.size() &&
+                SimpleCollisionSpace::atEntryPose(entries[size_t(st.entry)], *g))
+                continue;
+            const Checked& c = m_checked[size_t(st.proxy)];
+            if (c.valid && c.raw && c.shapeVersion == g->shapeVersion() && c.inputs.same(d)) continue;
+        }
         Vector o;
         Matrix r(1);
         if (!g->currentPose(o, r)) continue;
@@ -351,6 +363,8 @@ void TreeBroadphase::syncForQuery(const std::vector<CollisionGeometry*>& all,
         checked.rotation = r;
         checked.shapeVersion = g->shapeVersion();
         checked.valid = true;
+        checked.raw = raw;
+        if (raw) checked.inputs.store(d);
     }
     applyMoves();
 }

@@ -23,6 +23,7 @@
 
 #include "Broadphase.h"
 #include "DynamicTree.h"
+#include "PoseInputs.h"
 
 #include <cstdint>
 
@@ -100,8 +101,9 @@ private:
     struct Checked {
         Vector origin;
         Matrix rotation = Matrix(1);
+        gcol::PoseInputs inputs; // what the pose was made of, when its body had no parent (raw)
         unsigned shapeVersion = 0;
-        bool valid = false;
+        bool valid = false, raw = false;
     };
     void syncForQuery(const std::vector<CollisionGeometry*>& all,
                       const std::vector<SimpleCollisionSpace::Entry>& entries);
