@@ -233,7 +233,7 @@ private:
     void forgetContactPairsOfGone();
     static void onBodyDestroyed(const iRigidBody* dying, void* self);
     void settleDeadBodies(); // the pairs of bodies that died since the last call marked gone
-    bool queryShapes(iCollisionGeometry* ig, std::vector<gcol::WorldShape>& out);
+    bool queryShapes(CollisionGeometry* g, std::vector<gcol::WorldShape>& out); // (a member: no cast back)
     // SpaceShapeCast.cpp (the cast) and SpaceCastObstacles.cpp (what a sweep may meet)
     static constexpr int kUnusableSweep = -2; // CastGeometry::sweep of a geometry whose pose is not finite
     struct CastGeometry {

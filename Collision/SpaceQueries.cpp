@@ -7,8 +7,7 @@
 
 #include <cmath>
 
-bool SimpleCollisionSpace::queryShapes(iCollisionGeometry* ig, std::vector<gcol::WorldShape>& out) {
-    CollisionGeometry* g = CollisionGeometry::from(ig);
+bool SimpleCollisionSpace::queryShapes(CollisionGeometry* g, std::vector<gcol::WorldShape>& out) {
     out.clear();
     const CollisionGeometry::SpaceState& st = g->spaceState();
     if (st.pendingDelete || st.pendingRemove) return false;
@@ -35,8 +34,8 @@ bool SimpleCollisionSpace::rayCast(const Vector& origin, const Vector& direction
     std::vector<gcol::WorldShape>& shapes = m_scratchA;
     m_broadphase->rayCandidates(m_members, m_entries, origin, dir, maxDistance, m_candidates);
     for (CollisionGeometry* g : m_candidates) {
+        if (!queryShapes(g, shapes)) continue;
         iCollisionGeometry* ig = g->asInterface();
-        if (!queryShapes(ig, shapes)) continue;
         for (const gcol::WorldShape& s : shapes) {
             float t;
             Vector n;
@@ -57,15 +56,14 @@ namespace {
 
 size_t overlapWith(SimpleCollisionSpace& space, const std::vector<CollisionGeometry*>& candidates,
                    const gcol::WorldShape& query, std::vector<gcol::WorldShape>& shapes,
-                   bool (SimpleCollisionSpace::*get)(iCollisionGeometry*, std::vector<gcol::WorldShape>&),
+                   bool (SimpleCollisionSpace::*get)(CollisionGeometry*, std::vector<gcol::WorldShape>&),
                    std::vector<iCollisionGeometry*>& out) {
     out.clear();
     for (CollisionGeometry* g : candidates) {
-        iCollisionGeometry* ig = g->asInterface();
-        if (!(space.*get)(ig, shapes)) continue;
+        if (!(space.*get)(g, shapes)) continue;
         for (const gcol::WorldShape& s : shapes)
             if (gcol::shapesOverlap(query, s)) {
-                out.push_back(ig);
+                out.push_back(g->asInterface());
                 break;
             }
     }

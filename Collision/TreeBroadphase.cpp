@@ -336,16 +336,17 @@ void TreeBroadphase::syncForQuery(const std::vector<CollisionGeometry*>& all,
         }
         const CollisionGeometry::SpaceState& st = g->spaceState();
         if (!g->body() || st.pendingDelete || st.pendingRemove) continue; // never a query result
-        // At the pose its fat box was made for, or last checked at, known without posing it.
+        // At the pose a query last checked its fat box at (first: once bodies moved since the space's
+        // call, that is the later pose), or the one it was made for, known without posing it.
         const RBDynamics& d = g->body()->getDynamics();
         const bool raw = !d.attachedTo();
         if (st.proxy >= 0 && raw && m_proxies[size_t(st.proxy)].leaf != gcol::DynamicTree::kNull) {
+            const Checked& c = m_checked[size_t(st.proxy)];
+            if (c.valid && c.raw && c.shapeVersion == g->shapeVersion() && c.inputs.same(d)) continue;
             if (m_proxies[size_t(st.proxy)].holdsEntry && st.entry >= 0 &&
                 size_t(st.entry) < entries.size() &&
                 SimpleCollisionSpace::atEntryPose(entries[size_t(st.entry)], *g))
                 continue;
-            const Checked& c = m_checked[size_t(st.proxy)];
-            if (c.valid && c.raw && c.shapeVersion == g->shapeVersion() && c.inputs.same(d)) continue;
         }
         Vector o;
         Matrix r(1);
