@@ -144,16 +144,16 @@ public:
             bool prevCurrent = false; // this call: SpaceState::previous* hold origin and rotation already
             bool prevIsSelf = false;  // prevOrigin and prevRotation are origin and rotation, bit for bit
             bool selfAngleKnown = false;
-            bool sized = false;   // minDim and bound hold for sizedVersion
-            bool reposed = false; // its shapes were made anew at the last call (so probably at this one)
+            bool sized = false;      // minDim and bound hold for sizedVersion
+            bool reposed = false;    // its shapes were made anew at the last call (so probably at this one)
+            bool rootIsSelf = false; // dynamics had no parent at the last call
             unsigned shapeVersion = 0, sizedVersion = 0;
             float bound = 0.0f, selfAngle = 0.0f; // bounding radius; rotationAngle(rotation, rotation)
             gcol::PoseInputs rawInputs; // (in the entry's first three cache lines: a call where nothing moved
                                         // reads no more of it)
             gcol::Aabb tight;           // its shapes' box at the pose
             int capacity = 0;           // shapes m_shapes holds for it from first on
-            const RBDynamics* dynamics = nullptr; // its body's at the last call (only to fetch ahead)
-            const RBDynamics* unlinked = nullptr; // the same, if it had no parent then (else nullptr)
+            const RBDynamics* dynamics = nullptr; // its body's at the last call (to fetch ahead; rootIsSelf)
         } cache;
         int first = 0, last = 0;   // its shapes in m_shapes
         Vector origin, prevOrigin; // the previous pose: set (and read) only in a call with sampling on
@@ -306,7 +306,7 @@ private:
     bool m_restingNewcomer = false; // this call: a resting geometry (fixed, bodiless) joined the space
     bool m_layoutDirty = true;      // members were added or removed, or m_shapes is mostly waste
     // RBDynamics::attachmentEpoch at the last gathering, and whether it is the same now
-    // (Entry::Cache::unlinked holds).
+    // (Entry::Cache::rootIsSelf holds).
     unsigned long long m_linksEpoch = 0;
     bool m_linksUnchanged = false;
     size_t m_shapeWaste = 0; // shapes in m_shapes no entry owns

@@ -159,11 +159,12 @@ bool SimpleCollisionSpace::gatherEntry(Entry& e, bool continuous) {
         return false;
     }
     const RBDynamics* d = body ? &body->getDynamics() : nullptr;
+    const bool rootKnown = m_linksUnchanged && c.rootIsSelf && c.dynamics == d;
     c.dynamics = d;
     // Its root: itself when it had no parent at the last call and no attachment changed since (the links lie
     // at the far end of RBDynamics, a cache line read for nothing).
-    const RBDynamics* root = d && (!m_linksUnchanged || c.unlinked != d) ? d->attachmentRoot() : d;
-    c.unlinked = root == d ? d : nullptr;
+    const RBDynamics* root = d && !rootKnown ? d->attachmentRoot() : d;
+    c.rootIsSelf = d && root == d;
     const unsigned version = g->shapeVersion();
     bool same = c.valid && e.body == body && c.shapeVersion == version; // never for a plane
     c.reposed = !same;
