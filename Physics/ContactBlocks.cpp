@@ -4,6 +4,7 @@
 #include "SolverRows.h"
 
 #include <algorithm>
+#include <type_traits>
 
 namespace physics {
 
@@ -264,12 +265,18 @@ void ContactBlocks::solve(std::vector<SolverBody>& bodies, const Sweep& sweep) {
         }
         Velocity* u = m_velocity.data();
         BlockVelocity vel = gatherBlock(block, u);
-        auto solveNormal = [&]() {
+        // soft: the push out's soft rows; otherwise every row is rigid (mass scale 1, impulse scale 0: the
+        // same bits without those two products, as the impulses are finite and never -0).
+        auto solveNormal = [&](auto soft) {
             for (int i = 0; i < block.points; ++i) {
                 BlockPoint& q = block.p[i];
                 const Lanes vn = rowSpeed(q.row[0], vel);
-                const Lanes change =
-                    (-q.row[0].mass) * massScale[i] * (vn + bias[i]) - impulseScale[i] * q.impulse[0];
+                Lanes change;
+                if constexpr (decltype(soft)::value)
+                    change =
+                        (-q.row[0].mass) * massScale[i] * (vn + bias[i]) - impulseScale[i] * q.impulse[0];
+                else
+                    change = (-q.row[0].mass) * (vn + bias[i]);
                 const Lanes total = maxOf(zero, q.impulse[0] + change); // push only, never pull
                 applyRow(q.row[0], block.invMassA, block.invMassB, total - q.impulse[0], vel);
                 q.impulse[0] = total;
@@ -280,9 +287,12 @@ void ContactBlocks::solve(std::vector<SolverBody>& bodies, const Sweep& sweep) {
         // push out moves along the normals only: its velocities are thrown away after the move, and friction
         // there (bounded by the load the normal impulse carries) pushed stacked boxes sideways in every
         // sub-step. Measurements for both: ContactSolver.cpp, before solveContacts.
-        solveNormal();
-        if (sweep.pass != Pass::Relax) solveNormal();
-        if (sweep.pass != Pass::PushOut) {
+        if (sweep.pass == Pass::PushOut) {
+            solveNormal(std::true_type{});
+            solveNormal(std::true_type{});
+        } else {
+            solveNormal(std::false_type{});
+            if (sweep.pass == Pass::Velocity) solveNormal(std::false_type{});
             if (block.friction)
                 for (int i = 0; i < block.points; ++i) {
                     BlockPoint& q = block.p[i];
@@ -294,7 +304,7 @@ void ContactBlocks::solve(std::vector<SolverBody>& bodies, const Sweep& sweep) {
                         q.impulse[r] = total;
                     }
                 }
-            solveNormal();
+            solveNormal(std::false_type{});
         }
         scatterBlock(block, vel, u);
     }

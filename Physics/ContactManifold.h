@@ -38,6 +38,7 @@ struct SolverBody {
     // sweep along it (the pose is stored as a teleport, RBDynamics::teleports); the move it made.
     bool projected = false;
     Vec3 projection = Vec3::Zero();
+    int slot = -1; // its index in the solver's bodies (what a body access keeps per body is kept by it)
 };
 
 struct ContactPoint {

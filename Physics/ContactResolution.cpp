@@ -20,6 +20,7 @@ SolverBody SceneBodyAccess::enter(RBDynamics* root, int slot) const {
     if (!root) return SolverBodyAccess::enter(nullptr, slot); // the static world
     SolverBody b;
     b.root = root;
+    b.slot = slot;
     RigidBody* body = bodyOf(root);
     // The contacts were found at the step's starting poses: anchors are measured there.
     b.startOrigin = body ? body->startPosition() : toEigen(root->position);
@@ -65,7 +66,8 @@ void SceneBodyAccess::setMotion(SolverBody& b, RigidBody* body, const Composite&
     b.dw = dw;
     b.invMass = c.invMass;
     b.invInertia = worldInverseInertia(c, q0);
-    m_mass[b.root] = Mass{body, c.rootOffset, c.inertia};
+    if (size_t(b.slot) >= m_mass.size()) m_mass.resize(size_t(b.slot) + 1);
+    m_mass[size_t(b.slot)] = Mass{body, c.rootOffset, c.inertia};
 }
 
 bool SceneBodyAccess::alive(const RBDynamics* root) const {
@@ -76,7 +78,7 @@ bool SceneBodyAccess::alive(const RBDynamics* root) const {
 
 void SceneBodyAccess::storeVelocity(const SolverBody& b) const {
     if (!b.root || b.invMass == 0.0f) return;
-    const Mass& m = *m_mass.find(b.root); // load() recorded every movable body
+    const Mass& m = m_mass[size_t(b.slot)]; // setMotion recorded every movable body
     Mat3 r = b.rotation.toRotationMatrix();
     Vec3 arm = r * m.rootOffset;
     const Vec3 momentum = r * m.inertia * r.transpose() * b.w;
@@ -89,7 +91,7 @@ void SceneBodyAccess::storeVelocity(const SolverBody& b) const {
 
 void SceneBodyAccess::storePose(const SolverBody& b) const {
     SolverBodyAccess::storePose(b);
-    if (const Mass* m = m_mass.find(b.root)) m->body->writePosition(b.origin);
+    if (b.invMass != 0.0f) m_mass[size_t(b.slot)].body->writePosition(b.origin);
 }
 
 void SceneBodyAccess::acceptWrites(const std::vector<SolverBody>& bodies) const {
@@ -99,7 +101,7 @@ void SceneBodyAccess::acceptWrites(const std::vector<SolverBody>& bodies) const 
             if (RigidBody* entered = bodyOf(b.root)) entered->solverSlot = -1; // entered, never completed
             continue;
         }
-        RigidBody* body = m_mass.find(b.root)->body;
+        RigidBody* body = m_mass[size_t(b.slot)].body;
         body->solverSlot = -1;
         body->writtenOmega = b.root->angularVelocity;
         body->writtenMomentum = b.root->angularMomentum;

@@ -26,10 +26,7 @@ public:
     using BodyMap = FlatMap<const RBDynamics*, RigidBody*>;
     // The scene keeps one (its tables keep their storage from step to step); gravity is set each step.
     explicit SceneBodyAccess(const BodyMap& bodies) : m_bodies(bodies) {}
-    void startStep(const Vec3& gravity) {
-        m_gravity = gravity;
-        m_mass.clear();
-    }
+    void startStep(const Vec3& gravity) { m_gravity = gravity; }
 
     // A movable body enters with its start pose only and RigidBody::solverSlot set: setMotion completes it.
     SolverBody enter(RBDynamics* root, int slot) const override;
@@ -47,7 +44,7 @@ public:
     void acceptWrites(const std::vector<SolverBody>& bodies) const;
 
 private:
-    struct Mass { // initialised members: FlatMap's operator[] value-initialises one before it is assigned
+    struct Mass {
         RigidBody* body = nullptr;
         Vec3 rootOffset = Vec3::Zero(); // root COM - composite COM, root axes
         Mat3 inertia = Mat3::Zero();    // local, about the composite COM
@@ -55,7 +52,9 @@ private:
     const BodyMap& m_bodies;
     Vec3 m_gravity = Vec3::Zero();
     RigidBody* bodyOf(const RBDynamics* root) const;
-    mutable FlatMap<const RBDynamics*, Mass> m_mass;
+    // By solver slot; read only for this step's movable bodies, whose setMotion wrote them (the rest may hold
+    // an earlier step's: kept, not cleared, so that the table is not written afresh each step).
+    mutable std::vector<Mass> m_mass;
 };
 
 // Union-find over the scene's bodies, joined by this step's contacts: the islands that sleep and wake

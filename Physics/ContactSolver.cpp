@@ -64,9 +64,10 @@ void turnAndMove(SolverBody& b, const Vec3& dp, const Vec3& dtheta) {
 } // namespace
 
 // --- default body access: one RBDynamics, no attachments ---
-SolverBody SolverBodyAccess::enter(RBDynamics* root, int) const {
+SolverBody SolverBodyAccess::enter(RBDynamics* root, int slot) const {
     SolverBody b;
     b.root = root;
+    b.slot = slot;
     if (!root) return b; // the static world
     b.origin = b.startOrigin = b.com = toEigen(root->position);
     b.rotation = b.startRotation = toQuat(root->orientation);
