@@ -115,6 +115,13 @@ private:
 
 class ContactSolver {
 public:
+    // A body turned by moveBodies' first pass, for its second: where its origin sits from its centre of mass
+    // (body axes), or that it sits on it.
+    struct Turned {
+        Vec3 offset;
+        bool centred;
+    };
+
     void setSettings(const SolverSettings& s) { m_settings = s; }
     const SolverSettings& settings() const { return m_settings; }
 
@@ -221,6 +228,7 @@ private:
     std::vector<int> m_touchStart, m_touching; // each body's manifolds: m_touching[m_touchStart[i] ..]
     std::vector<int> m_scratch;
     std::vector<char> m_carries, m_keep;
+    std::vector<Turned> m_turned; // moveBodies' first pass, for its second
     std::vector<std::pair<size_t, bool>> m_shock;
     static constexpr Real kHeavyRatio = 10.0f; // shock propagation acts under a body this much heavier
     // The soft contact for the current sub-step length: the world's, and a manifold's own (stiffer for a
