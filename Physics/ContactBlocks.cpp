@@ -215,8 +215,19 @@ void ContactBlocks::measureGaps(ContactBlock& block) const {
 
 // --- the sweeps ---
 
-void ContactBlocks::warmStart(std::vector<SolverBody>& bodies, bool firstSubstep, Real impactSpeed) {
-    loadVelocities(bodies);
+void ContactBlocks::addForces(const std::vector<SolverBody>& bodies, Real share) {
+    for (size_t i = 0; i < bodies.size(); ++i) {
+        const SolverBody& b = bodies[i];
+        if (!movable(b)) continue;
+        Velocity& u = m_velocity[i];
+        for (int k = 0; k < 3; ++k) {
+            u.v[k] += share * b.dv[k];
+            u.w[k] += share * b.dw[k];
+        }
+    }
+}
+
+void ContactBlocks::warmStart(bool firstSubstep, Real impactSpeed) {
     const Lanes impact(impactSpeed), zero(0);
     for (ContactBlock& block : m_blocks) {
         Velocity* u = m_velocity.data();
@@ -235,11 +246,9 @@ void ContactBlocks::warmStart(std::vector<SolverBody>& bodies, bool firstSubstep
         }
         scatterBlock(block, vel, u);
     }
-    storeVelocities(bodies);
 }
 
-void ContactBlocks::solve(std::vector<SolverBody>& bodies, const Sweep& sweep) {
-    loadVelocities(bodies);
+void ContactBlocks::solve(const std::vector<SolverBody>& bodies, const Sweep& sweep) {
     if (sweep.measureGaps) loadPoses(bodies);
     const Lanes zero(0), one(1), h(sweep.h), touch(-sweep.touchOverlap), impact(-sweep.restitutionThreshold),
         maxPush(-sweep.maxPushSpeed);
@@ -308,16 +317,17 @@ void ContactBlocks::solve(std::vector<SolverBody>& bodies, const Sweep& sweep) {
         }
         scatterBlock(block, vel, u);
     }
-    storeVelocities(bodies);
 }
 
-void ContactBlocks::saveImpulses() {
+void ContactBlocks::saveSolved() {
+    m_saved.assign(m_velocity.begin(), m_velocity.end());
     for (ContactBlock& block : m_blocks)
         for (int i = 0; i < block.points; ++i)
             for (int r = 0; r < 3; ++r) block.p[i].solved[r] = block.p[i].impulse[r];
 }
 
-void ContactBlocks::restoreImpulses() {
+void ContactBlocks::restoreSolved() {
+    std::copy(m_saved.begin(), m_saved.end(), m_velocity.begin());
     for (ContactBlock& block : m_blocks)
         for (int i = 0; i < block.points; ++i)
             for (int r = 0; r < 3; ++r) block.p[i].impulse[r] = block.p[i].solved[r];

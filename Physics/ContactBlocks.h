@@ -66,14 +66,27 @@ public:
     // with friction, the two tangents; each point keeps its normal row and approach speed too (restitution,
     // shock propagation).
     void prepare(std::vector<Manifold>& manifolds, const std::vector<SolverBody>& bodies);
+    // The bodies' velocities live in the blocks' flat array through the sub-steps: loaded once after pack()
+    // and stored back once after the last sub-step (or around whatever else reads or writes a SolverBody's
+    // velocities in between: joints, shock propagation).
+    void loadVelocities(const std::vector<SolverBody>& bodies);
+    void storeVelocities(std::vector<SolverBody>& bodies) const;
+    // A movable body's velocities gain share of what the step's forces add (SolverBody::dv, dw).
+    void addForces(const std::vector<SolverBody>& bodies, Real share);
     // Re-applies the accumulated impulses (an impact's only in the first sub-step).
-    void warmStart(std::vector<SolverBody>& bodies, bool firstSubstep, Real impactSpeed);
+    void warmStart(bool firstSubstep, Real impactSpeed);
     // One sweep: per manifold the normal impulses twice (once in a relax), friction, the normal impulses
     // again (a push out: the normal impulses twice, no friction), each point measured against its gap
-    // (measured first when the sweep says so).
-    void solve(std::vector<SolverBody>& bodies, const Sweep& sweep);
-    void saveImpulses();
-    void restoreImpulses();
+    // (measured first, at the bodies' poses, when the sweep says so).
+    void solve(const std::vector<SolverBody>& bodies, const Sweep& sweep);
+    // The velocities and impulses the sub-step solved, kept before the push out and put back after it.
+    void saveSolved();
+    void restoreSolved();
+    // Body i's velocities now, and as saveSolved() kept them.
+    Vec3 velocity(size_t i) const { return vec(m_velocity[i].v); }
+    Vec3 spin(size_t i) const { return vec(m_velocity[i].w); }
+    Vec3 savedVelocity(size_t i) const { return vec(m_saved[i].v); }
+    Vec3 savedSpin(size_t i) const { return vec(m_saved[i].w); }
     // The accumulated normal impulse of a manifold's point (shock propagation adds to it).
     Real normalImpulse(const Manifold& m, int point) const { return at(m).p[point].impulse[0].lane(m.lane); }
     void setNormalImpulse(const Manifold& m, int point, Real value) {
@@ -90,9 +103,8 @@ private:
     ContactBlock& at(const Manifold& m) { return m_blocks[size_t(m.block)]; }
     int openBlock(int from); // the first block from this one with a free lane (or the end)
     void fill(ContactBlock& block, int lane, Manifold& m, int index, const std::vector<SolverBody>& bodies);
-    void loadVelocities(const std::vector<SolverBody>& bodies);
-    void storeVelocities(std::vector<SolverBody>& bodies) const;
     void loadPoses(const std::vector<SolverBody>& bodies);
+    static Vec3 vec(const Real* x) { return Vec3(x[0], x[1], x[2]); }
     void measureGaps(ContactBlock& block) const;
 
     struct alignas(16) Velocity {
@@ -103,6 +115,7 @@ private:
     };
     std::vector<ContactBlock> m_blocks;
     std::vector<Velocity> m_velocity; // per solver body, then a zero slot and a scratch slot
+    std::vector<Velocity> m_saved;    // m_velocity as saveSolved() found it
     std::vector<Pose> m_pose;         // per solver body, then the zero slot's identity
     // Packing: each body's last block so far, each block's lanes used, and a skip list to a block with a free
     // lane.

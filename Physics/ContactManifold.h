@@ -30,8 +30,6 @@ struct SolverBody {
     Vec3 w = Vec3::Zero();
     // What this step's forces added to v and w: the sub-steps add it a share at a time.
     Vec3 dv = Vec3::Zero(), dw = Vec3::Zero();
-    // The sub-step's solved velocities, before the push out (which moves the body but is not kept).
-    Vec3 vSolved = Vec3::Zero(), wSolved = Vec3::Zero();
     Real invMass = 0;
     Mat3 invInertia = Mat3::Zero();
     // Projected out of a deep overlap this step: a correction, not motion, so a collision space must not

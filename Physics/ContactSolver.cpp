@@ -137,24 +137,33 @@ void ContactSolver::solve(Real dt, const SolverBodyAccess& access) {
     orderByLevel();
     splitForces();
     prepareJoints(h);
+    // Through the sub-steps the velocities live in the blocks' flat array; joints and shock propagation (when
+    // there are any) work on the bodies, which get them for that and give them back.
+    m_blocks.loadVelocities(m_bodies);
+    const bool jointed = !m_solvedJoints.empty(), shocked = !m_shock.empty();
     for (int i = 0; i < n; ++i) {
-        addForces(1.0f / Real(n));
+        m_blocks.addForces(m_bodies, 1.0f / Real(n));
         warmStart(i == 0);
-        warmStartJoints();
-        solveJoints(h, JointPass::Velocity);
+        onBodies(jointed, [&] {
+            warmStartJoints();
+            solveJoints(h, JointPass::Velocity);
+        });
         // the velocities: approach stopped, nothing pushed (the gaps measured by the last relax sweep hold:
         // nothing has moved since)
         solveContacts(h, ContactBlocks::Pass::Velocity, i == 0);
-        propagateShock(h); // what a light body under a heavy one could not stop
+        onBodies(shocked, [&] { propagateShock(h); }); // what a light body under a heavy one could not stop
         saveVelocities();
-        solveJoints(h, JointPass::PushOut);
+        onBodies(jointed, [&] { solveJoints(h, JointPass::PushOut); });
         solveContacts(h, ContactBlocks::Pass::PushOut, false); // on top (at the same poses and gaps)
         moveBodies(h);                                         // by the velocities plus the push, capped
         restoreVelocities();                                   // the push out's velocity is not kept
-        prepareJoints(h); // the joints' rows at the new poses (the next sub-step starts there too)
-        solveJoints(h, JointPass::Relax);
+        onBodies(jointed, [&] {
+            prepareJoints(h); // the joints' rows at the new poses (the next sub-step starts there too)
+            solveJoints(h, JointPass::Relax);
+        });
         solveContacts(h, ContactBlocks::Pass::Relax, true); // the velocities again, at the new poses
     }
+    m_blocks.storeVelocities(m_bodies);
     m_blocks.unpack(m_manifolds);
     findBounces();
     projectDeepOverlaps();
@@ -230,12 +239,12 @@ void ContactSolver::splitForces() {
     }
 }
 
-void ContactSolver::addForces(Real share) {
-    for (SolverBody& b : m_bodies) {
-        if (!movable(b)) continue;
-        b.v += share * b.dv;
-        b.w += share * b.dw;
-    }
+// Work on the bodies' own velocities, when there is any (the sub-steps keep them in the blocks).
+template <class Work> void ContactSolver::onBodies(bool any, Work work) {
+    if (!any) return;
+    m_blocks.storeVelocities(m_bodies);
+    work();
+    m_blocks.loadVelocities(m_bodies);
 }
 
 // Every sub-step starts from the impulses the last one ended with (the first from last step's): a resting
@@ -244,7 +253,7 @@ void ContactSolver::addForces(Real share) {
 // again and bound friction by it (a box landing at 4 m/s while sliding hopped 0.06 m/s and lost 7 % more
 // slide than Coulomb's law allows).
 void ContactSolver::warmStart(bool firstSubstep) {
-    m_blocks.warmStart(m_bodies, firstSubstep, -m_settings.restitutionThreshold);
+    m_blocks.warmStart(firstSubstep, -m_settings.restitutionThreshold);
 }
 
 // One sweep over the manifolds, a block (four or eight) at a time (ContactBlocks.h). Per manifold: the normal
@@ -278,20 +287,12 @@ void ContactSolver::solveContacts(Real h, ContactBlocks::Pass pass, bool measure
 // The velocities the sub-step solved for, and the impulses that produced them, before the push out.
 void ContactSolver::saveVelocities() {
     saveJoints();
-    for (SolverBody& b : m_bodies) {
-        b.vSolved = b.v;
-        b.wSolved = b.w;
-    }
-    m_blocks.saveImpulses();
+    m_blocks.saveSolved();
 }
 
 void ContactSolver::restoreVelocities() {
     restoreJoints();
-    for (SolverBody& b : m_bodies) {
-        b.v = b.vSolved;
-        b.w = b.wSolved;
-    }
-    m_blocks.restoreImpulses();
+    m_blocks.restoreSolved();
 }
 
 // Semi-implicit Euler over h: the frame turns about the centre of mass. A body moves by its solved velocity
@@ -309,14 +310,15 @@ void ContactSolver::moveBodies(Real h) {
     for (size_t i = 0; i < m_bodies.size(); ++i) {
         SolverBody& b = m_bodies[i];
         if (!movable(b)) continue;
-        Vec3 push = b.v - b.vSolved, turn = b.w - b.wSolved;
+        const Vec3 vSolved = m_blocks.savedVelocity(i), wSolved = m_blocks.savedSpin(i);
+        Vec3 push = m_blocks.velocity(i) - vSolved, turn = m_blocks.spin(i) - wSolved;
         const Real speed = push.norm();
         if (speed > cap) {
             const Real scale = cap / speed;
             push *= scale;
             turn *= scale;
         }
-        m_turned[i] = turnBody(b, h * (b.vSolved + push), h * (b.wSolved + turn));
+        m_turned[i] = turnBody(b, h * (vSolved + push), h * (wSolved + turn));
     }
     for (size_t i = 0; i < m_bodies.size(); ++i)
         if (movable(m_bodies[i])) settleBody(m_bodies[i], m_turned[i]);

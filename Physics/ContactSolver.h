@@ -187,7 +187,7 @@ private:
     void applySwitches();
     void prepare(Real dt, Real h);
     void splitForces();
-    void addForces(Real share);
+    template <class Work> void onBodies(bool any, Work work);
     void warmStart(bool firstSubstep);
     void solveContacts(Real h, ContactBlocks::Pass pass, bool measureGaps);
     void saveVelocities();
