@@ -215,7 +215,7 @@ private:
     bool sweepSpheres(const Entry& a, const Entry& b);
     void emit(const Entry& a, const Entry& b, const gcol::ContactManifold& m, unsigned childPair,
               unsigned tag);
-    void notifyListeners(std::vector<Notice>& notices);
+    void notifyListeners(const std::vector<Notice>& notices);
     // SpaceEvents.cpp: the pairs still touching (resting pairs carried from their last contact), and HitWall
     // now or held for deliverEvents.
     void carryRestingPairs();
@@ -318,7 +318,8 @@ private:
     std::vector<CollisionGeometry*> m_candidates; // a query's
     std::vector<Notice> m_notices;  // this call's touching pairs, then the resting ones carried over
     std::vector<Notice> m_touching; // the pairs touching at the last call
-    std::vector<Notice> m_held;     // pairs that touched since the last delivery (events held)
+    std::vector<Notice> m_held;     // pairs that touched since the last delivery (events held), once a
+                                    // second call is held (the first's are m_touching's until then)
     int m_heldCalls = 0;            // populate calls held since the last delivery
     std::vector<Notice> m_delivery; // scratch
     struct BodyPair {
@@ -326,6 +327,7 @@ private:
         size_t index;          // the notice's place in its list
     };
     std::vector<BodyPair> m_bodyPairs; // scratch: notifyListeners finds repeated body pairs
+    std::vector<char> m_repeat;        // scratch: notifyListeners' notices of a body pair listed before
     bool m_holdEvents = false;
     unsigned long long m_call = 0; // populateContactList calls, to tell this call's entries
     std::vector<iCollisionListener*> m_listenerSnapshot;

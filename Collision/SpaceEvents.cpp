@@ -48,17 +48,19 @@ void SimpleCollisionSpace::carryRestingPairs() {
     }
 }
 
+// The notices held since the last delivery: the first held call's are m_touching's until a second call
+// comes (a frame of one step, the usual case, copies none), then every held call's are in m_held.
 void SimpleCollisionSpace::reportTouching() {
-    m_touching = m_notices;
+    if (m_heldCalls == 1) m_held.insert(m_held.end(), m_touching.begin(), m_touching.end());
+    m_touching.swap(m_notices); // (the next call clears m_notices before it lists anything)
     if (!m_holdEvents) {
         if (m_heldCalls > 0) m_heldCalls = 2; // what is held is no longer what touches now: deliver both
-        if (!m_observers.empty()) gatherContactPairs(m_notices);
-        notifyListeners(m_notices);
+        if (!m_observers.empty()) gatherContactPairs(m_touching);
+        notifyListeners(m_touching);
         deliverContactEvents();
         return;
     }
-    ++m_heldCalls;
-    m_held.insert(m_held.end(), m_notices.begin(), m_notices.end());
+    if (++m_heldCalls > 1) m_held.insert(m_held.end(), m_touching.begin(), m_touching.end());
     // A game that holds events and never delivers them keeps only one notice per pair.
     if (m_held.size() > 8 * (m_touching.size() + 64)) dropRepeats(m_held);
 }
@@ -71,13 +73,17 @@ void SimpleCollisionSpace::deliverEvents() {
     }
     // The latest contact of a pair still touching first: notifyListeners keeps the first of each body pair.
     // One call held (a frame of one step, the usual case): what it held is what still touches, m_touching
-    // itself, so it is not listed twice (the body-pair sort in notifyListeners halves).
-    m_delivery = m_touching;
-    if (m_heldCalls > 1) m_delivery.insert(m_delivery.end(), m_held.begin(), m_held.end());
+    // itself, delivered as it is (not listed twice, nor copied).
+    const bool several = m_heldCalls > 1;
+    if (several) {
+        m_delivery = m_touching;
+        m_delivery.insert(m_delivery.end(), m_held.begin(), m_held.end());
+    }
+    const std::vector<Notice>& delivery = several ? m_delivery : m_touching;
     m_held.clear();
     m_heldCalls = 0;
-    if (!m_observers.empty()) gatherContactPairs(m_delivery);
-    notifyListeners(m_delivery);
+    if (!m_observers.empty()) gatherContactPairs(delivery);
+    notifyListeners(delivery);
     deliverContactEvents();
 }
 

@@ -14,7 +14,7 @@
 #include <algorithm>
 #include <cstdint>
 
-void SimpleCollisionSpace::notifyListeners(std::vector<Notice>& notices) {
+void SimpleCollisionSpace::notifyListeners(const std::vector<Notice>& notices) {
     // Nobody listening (a scene of many bodies, most often): nothing to sort or tell. (A body is asked only
     // while its geometry is bound to it: a deleted one was unbound.)
     bool anyone = false;
@@ -40,14 +40,15 @@ void SimpleCollisionSpace::notifyListeners(std::vector<Notice>& notices) {
     std::sort(m_bodyPairs.begin(), m_bodyPairs.end(), [](const BodyPair& a, const BodyPair& b) {
         return a.lo != b.lo ? a.lo < b.lo : a.hi != b.hi ? a.hi < b.hi : a.index < b.index;
     });
+    m_repeat.assign(notices.size(), 0);
     for (size_t i = 1; i < m_bodyPairs.size(); ++i) {
         const BodyPair &p = m_bodyPairs[i], &q = m_bodyPairs[i - 1];
-        if (p.lo == q.lo && p.hi == q.hi)
-            notices[p.index].points = 0; // a duplicate: the first one listed stays
+        if (p.lo == q.lo && p.hi == q.hi) m_repeat[p.index] = 1; // a repeat: the first one listed stays
     }
     m_notifying = true;
-    for (const Notice& n : notices) {
-        if (n.points == 0 || n.sensor) continue;
+    for (size_t i = 0; i < notices.size(); ++i) {
+        const Notice& n = notices[i];
+        if (n.points == 0 || m_repeat[i] || n.sensor) continue;
         for (int side = 0; side < 2; ++side) {
             iRigidBody* self = side == 0 ? n.b1 : n.b2;
             iRigidBody* other = side == 0 ? n.b2 : n.b1;
