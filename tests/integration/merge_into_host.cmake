@@ -1,8 +1,12 @@
 # Merges one drop-in package into the test course host exactly as the package's INTEGRATION.md says, checks
 # that the host changed only as INTEGRATION.md lists, then builds and runs the host's own game (unchanged
 # code) and a physics check built on the merged host.
-# Run as: cmake -DROOT=<repo> -DPACKAGE=<name> -DWORK=<scratch dir> -P merge_into_host.cmake
+# Run as: cmake -DROOT=<repo> -DPACKAGE=<name> -DWORK=<scratch dir> [-DCXX=<compiler>] -P merge_into_host.cmake
 cmake_minimum_required(VERSION 3.20)
+set(compiler "")
+if(CXX) # the compiler of this project (tests/integration/CMakeLists.txt)
+  set(compiler -DCMAKE_CXX_COMPILER=${CXX})
+endif()
 set(template "${ROOT}/tests/integration/course_host")
 file(REMOVE_RECURSE "${WORK}")
 file(COPY "${template}/framework/" DESTINATION "${WORK}/original")
@@ -98,7 +102,7 @@ list(LENGTH merged_files n)
 message(STATUS "${PACKAGE}: ${n} lines merged as INTEGRATION.md lists; the rest of the host is unchanged")
 
 # The host's own game builds and runs unchanged, now with the package inside, and so do the physics checks.
-execute_process(COMMAND ${CMAKE_COMMAND} -S "${template}/checks" -B "${WORK}/build" -DCMAKE_BUILD_TYPE=
+execute_process(COMMAND ${CMAKE_COMMAND} -S "${template}/checks" -B "${WORK}/build" -DCMAKE_BUILD_TYPE= ${compiler}
                         -DCMAKE_UNITY_BUILD=ON -DCMAKE_UNITY_BUILD_BATCH_SIZE=0 -DHOST=${host} -DPACKAGE=${PACKAGE} RESULT_VARIABLE rc OUTPUT_QUIET)
 if(NOT rc EQUAL 0)
   message(FATAL_ERROR "the merged host did not configure")

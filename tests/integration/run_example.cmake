@@ -1,9 +1,14 @@
 # Builds a package's example/ from the generated package alone (its own folders, Standalone/ and Eigen;
 # nothing else of this repository) and runs it: the example checks its own physics and exits non-zero when
 # a check fails.
-# Run as: cmake -DROOT=<repo> -DPACKAGE=<name> -DWORK=<scratch dir> [-DCHECKER=<program>] -P run_example.cmake
+# Run as: cmake -DROOT=<repo> -DPACKAGE=<name> -DWORK=<scratch dir> [-DCHECKER=<program>] [-DCXX=<compiler>]
+#   -P run_example.cmake
 # (CHECKER: a program that runs the example and checks what it prints).
 cmake_minimum_required(VERSION 3.20)
+set(compiler "")
+if(CXX) # the compiler of this project (tests/integration/CMakeLists.txt)
+  set(compiler -DCMAKE_CXX_COMPILER=${CXX})
+endif()
 file(REMOVE_RECURSE "${WORK}")
 execute_process(COMMAND ${CMAKE_COMMAND} -DROOT=${ROOT} -DNAME=${PACKAGE} -DOUT=${WORK}
                         -P ${ROOT}/scripts/make_package.cmake RESULT_VARIABLE rc OUTPUT_QUIET)
@@ -13,7 +18,7 @@ endif()
 set(example "${WORK}/${PACKAGE}/example")
 # One unity file for the whole program: Eigen is parsed and instantiated once (39 s of CPU where batches of
 # eight took 69 s), and the package's file-local names must not clash, as in a user's unity build.
-execute_process(COMMAND ${CMAKE_COMMAND} -S "${example}" -B "${WORK}/build" -DCMAKE_BUILD_TYPE=
+execute_process(COMMAND ${CMAKE_COMMAND} -S "${example}" -B "${WORK}/build" -DCMAKE_BUILD_TYPE= ${compiler}
                         -DCMAKE_UNITY_BUILD=ON -DCMAKE_UNITY_BUILD_BATCH_SIZE=0 "-DCMAKE_CXX_FLAGS=-Wall -Wextra -Wpedantic -Werror"
                         RESULT_VARIABLE rc OUTPUT_QUIET)
 if(NOT rc EQUAL 0)
