@@ -1,11 +1,12 @@
 #!/usr/bin/env bash
-# Builds and runs every test: a warnings-as-errors build (g++), the same with clang++ (portable C++17; the fast
-# tests only), then an AddressSanitizer+UBSan build (clang++). The g++ build compiles each shipped file
-# (Interfaces/, Physics/, Collision/, Framework/, ReferenceGame/) on its own, so a missing include fails there;
-# the test programs, the double-precision companion library and the other two passes are unity builds
+# Builds and runs every test: a warnings-as-errors build (g++), then the same with clang++ (portable C++17),
+# instrumented with AddressSanitizer+UBSan and built for AVX when the CPU has it. The g++ build compiles each
+# shipped file (Interfaces/, Physics/, Collision/, Framework/, ReferenceGame/) on its own, so a missing include
+# fails there; the test programs, the double-precision companion library and the clang++ pass are unity builds
 # (several files per compiler run, which saves most of the time spent parsing and instantiating Eigen and
-# GoogleTest again). Each pass prints how long it took to build and to test.
-# Usage: scripts/test.sh [--quick]   (--quick: the g++ build only, no clang++ or sanitizer build)
+# GoogleTest again), and the package tests' own projects are compiled by clang++ (tests/integration). Each pass
+# prints how long it took to build and to test.
+# Usage: scripts/test.sh [--quick]   (--quick: the g++ build only, no clang++ build)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/install-deps.sh
@@ -30,22 +31,17 @@ run_suite() { # NAME BUILD_DIR CTEST_ARGS -- CMAKE_ARGS...
 lines_only=(-DCMAKE_BUILD_TYPE=RelWithDebInfo "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O2 -g1 -DNDEBUG")
 run_suite "warnings-as-errors" build "" -- "${lines_only[@]}"
 if [ "${1:-}" != "--quick" ]; then
-  # Everything compiles warning-free with clang++ too (Debian 12: clang 14). The game and the integration
-  # builds ran above and do not depend on the compiler's diagnostics: only the fast tests run again.
-  # The testbed window and its screenshot test ran above too (with g++): not built again.
-  # The double-precision companion library and its tests ran above too (GUARDIAN_DOUBLE_COMPANION).
-  # On a CPU with AVX this pass is built for it (GUARDIAN_AVX: the contact solver's eight-lane blocks), so the
-  # determinism hashes are checked at both widths; the other passes keep the default four.
+  # Everything compiles warning-free with clang++ too (Debian 12: clang 14), instrumented with AddressSanitizer
+  # and UBSan, the reference implementations; clang++ builds the instrumented code three times faster than g++
+  # (a unity file of Physics/: 22 s against 65 s). On a CPU with AVX this pass is built for it (GUARDIAN_AVX:
+  # the contact solver's eight-lane blocks), so the determinism hashes are checked at both widths (the g++
+  # pass keeps the default four) and the eight-lane code runs under the sanitizers.
+  # The package and install tests build projects of their own without sanitizers, the extremes suite's long
+  # runs (a 10^4-step soak: 41 s under ASan) and the testbed window ran above (with g++): not run again. The
+  # double-precision companion library and its tests ran above too (GUARDIAN_DOUBLE_COMPANION).
   avx=OFF
   if grep -qw avx /proc/cpuinfo 2>/dev/null; then avx=ON; fi
-  run_suite "clang++ warnings-as-errors (AVX $avx)" build-clang "-LE integration|game" -- -DCMAKE_BUILD_TYPE=Release \
-    -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_UNITY_BUILD=ON -DGUARDIAN_BUILD_TESTBED=OFF -DGUARDIAN_DOUBLE_COMPANION=OFF \
-    -DGUARDIAN_AVX=$avx
-  # The package and install tests build projects of their own without sanitizers: they ran above. The
-  # extremes suite's long runs (a 10^4-step soak: 41 s under ASan) and the testbed window ran above too.
-  # clang++ builds the instrumented code three times faster than g++ (a unity file of Physics/: 22 s
-  # against 65 s), and its AddressSanitizer and UBSan are the reference implementations.
-  run_suite "sanitizers (ASan+UBSan, clang++)" build-asan "-LE integration|extremes" -- "${lines_only[@]}" \
-    -DCMAKE_CXX_COMPILER=clang++ \
-    -DGUARDIAN_SANITIZE=ON -DCMAKE_UNITY_BUILD=ON -DGUARDIAN_BUILD_TESTBED=OFF -DGUARDIAN_DOUBLE_COMPANION=OFF
+  run_suite "clang++ with sanitizers (ASan+UBSan, AVX $avx)" build-asan "-LE integration|extremes" -- \
+    "${lines_only[@]}" -DCMAKE_CXX_COMPILER=clang++ -DGUARDIAN_SANITIZE=ON -DCMAKE_UNITY_BUILD=ON \
+    -DGUARDIAN_BUILD_TESTBED=OFF -DGUARDIAN_DOUBLE_COMPANION=OFF -DGUARDIAN_AVX=$avx
 fi
