@@ -8,6 +8,9 @@
 // cheapest that keeps the heavy box within 1 cm of where it rests). Options: --quick (each row once,
 // fewer steps), --only TEXT (only the rows whose name contains TEXT), --no-ccd (Guardian's continuous
 // collision off: not its default, for finding out what that stage costs and does here).
+// On Linux the process stays on the CPU it started on: every engine's every row on the same core
+// (StayOnThisCpu.h).
+#include "../StayOnThisCpu.h"
 #include "Scene.h"
 
 #include <algorithm>
@@ -307,9 +310,10 @@ int main(int argc, char** argv) {
     std::time_t now = std::time(nullptr);
     char date[64];
     std::strftime(date, sizeof date, "%Y-%m-%d %H:%M UTC", std::gmtime(&now));
-    std::printf("bench_compare%s%s, %s, %u hardware threads, one thread used, dt 1/60 s\n",
+    const int cpu = stayOnThisCpu();
+    std::printf("bench_compare%s%s, %s, %u hardware threads, one thread used (%s%d), dt 1/60 s\n",
                 quick ? " --quick" : "", noCcd ? " --no-ccd (Guardian's continuous collision off)" : "", date,
-                std::thread::hardware_concurrency());
+                std::thread::hardware_concurrency(), cpu >= 0 ? "kept on CPU " : "not pinned: ", cpu);
     std::printf("Bullet package %s, ODE package %s\n", COMPARE_BULLET_VERSION, COMPARE_ODE_VERSION);
     for (const Engine& e : engines)
         std::printf("  %-9s %-6s  defaults: %s\n", e.info.name.c_str(), e.info.precision.c_str(),
