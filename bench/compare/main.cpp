@@ -311,9 +311,10 @@ int main(int argc, char** argv) {
     char date[64];
     std::strftime(date, sizeof date, "%Y-%m-%d %H:%M UTC", std::gmtime(&now));
     const int cpu = stayOnThisCpu();
-    std::printf("bench_compare%s%s, %s, %u hardware threads, one thread used (%s%d), dt 1/60 s\n",
+    const std::string where = cpu >= 0 ? "kept on CPU " + std::to_string(cpu) : "not kept on one CPU";
+    std::printf("bench_compare%s%s, %s, %u hardware threads, one thread used (%s), dt 1/60 s\n",
                 quick ? " --quick" : "", noCcd ? " --no-ccd (Guardian's continuous collision off)" : "", date,
-                std::thread::hardware_concurrency(), cpu >= 0 ? "kept on CPU " : "not pinned: ", cpu);
+                std::thread::hardware_concurrency(), where.c_str());
     std::printf("Bullet package %s, ODE package %s\n", COMPARE_BULLET_VERSION, COMPARE_ODE_VERSION);
     for (const Engine& e : engines)
         std::printf("  %-9s %-6s  defaults: %s\n", e.info.name.c_str(), e.info.precision.c_str(),

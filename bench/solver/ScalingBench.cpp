@@ -22,6 +22,7 @@
 #include <cstdio>
 #include <map>
 #include <random>
+#include <string>
 
 #include <time.h>
 
@@ -121,8 +122,8 @@ int main(int argc, char** argv) {
     const auto& figures = perBodyNs();
     auto ref = figures.find(kReference);
     if (ref == figures.end() || ref->second <= 0) return 0;
-    std::printf("\nCPU ns per awake body-step, ratio to %d boxes (%s%d):\n", kReference,
-                cpu >= 0 ? "all on CPU " : "not kept on one CPU: ", cpu);
+    const std::string where = cpu >= 0 ? "all on CPU " + std::to_string(cpu) : "not kept on one CPU";
+    std::printf("\nCPU ns per awake body-step, ratio to %d boxes (%s):\n", kReference, where.c_str());
     for (const auto& f : figures)
         std::printf("  %6d boxes: %8.1f ns  x%.2f\n", f.first, f.second, f.second / ref->second);
     auto big = figures.find(10000);
