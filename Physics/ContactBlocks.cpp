@@ -76,8 +76,9 @@ int ContactBlocks::openBlock(int from) {
     return j;
 }
 
-void ContactBlocks::fill(ContactBlock& block, int lane, Manifold& m, int index,
-                         const std::vector<SolverBody>& bodies) {
+void ContactBlocks::fill(int j, int lane, Manifold& m, int index, const std::vector<SolverBody>& bodies) {
+    ContactBlock& block = m_blocks[size_t(j)];
+    BlockAnchors& anchors = m_anchors[size_t(j)];
     const SolverBody &a = bodies[size_t(m.a)], &b = bodies[size_t(m.b)];
     const int scratch = int(bodies.size()) + 1;
     block.manifold[lane] = index;
@@ -94,8 +95,8 @@ void ContactBlocks::fill(ContactBlock& block, int lane, Manifold& m, int index,
     for (int i = 0; i < m.count; ++i) {
         const ContactPoint& p = m.points[i];
         BlockPoint& q = block.p[i];
-        setLanes3(q.anchorA, lane, p.anchorA);
-        setLanes3(q.anchorB, lane, p.anchorB);
+        setLanes3(anchors.a[i], lane, p.anchorA);
+        setLanes3(anchors.b[i], lane, p.anchorB);
         q.impulse[0].setLane(lane, p.normalImpulse);
         q.impulse[1].setLane(lane, friction ? p.tangentImpulse[0] : Real(0));
         q.impulse[2].setLane(lane, friction ? p.tangentImpulse[1] : Real(0));
@@ -106,11 +107,13 @@ void ContactBlocks::fill(ContactBlock& block, int lane, Manifold& m, int index,
 void ContactBlocks::pack(std::vector<Manifold>& manifolds, const std::vector<SolverBody>& bodies) {
     const int zero = int(bodies.size()), scratch = zero + 1;
     m_blocks.clear();
+    m_anchors.clear();
     m_used.clear();
     m_nextOpen.clear();
     // Kept with room to spare, so that a warm scene whose packing varies from step to step does not allocate.
     if (m_blocks.capacity() < manifolds.size()) {
         m_blocks.reserve(manifolds.size() + manifolds.size() / 2);
+        m_anchors.reserve(m_blocks.capacity());
         m_used.reserve(m_blocks.capacity());
         m_nextOpen.reserve(m_blocks.capacity());
     }
@@ -123,6 +126,7 @@ void ContactBlocks::pack(std::vector<Manifold>& manifolds, const std::vector<Sol
         const int j = openBlock(after + 1);
         if (j == int(m_blocks.size())) {
             m_blocks.emplace_back();
+            m_anchors.emplace_back();
             ContactBlock& block = m_blocks.back();
             for (int lane = 0; lane < kLanes; ++lane) {
                 block.manifold[lane] = -1;
@@ -133,7 +137,7 @@ void ContactBlocks::pack(std::vector<Manifold>& manifolds, const std::vector<Sol
             m_nextOpen.push_back(j + 1);
         }
         m.block = j;
-        fill(m_blocks[size_t(j)], m_used[size_t(j)]++, m, int(k), bodies);
+        fill(j, m_used[size_t(j)]++, m, int(k), bodies);
         if (moveA) m_lastBlock[size_t(m.a)] = j;
         if (moveB) m_lastBlock[size_t(m.b)] = j;
     }
@@ -192,7 +196,7 @@ void ContactBlocks::loadPoses(const std::vector<SolverBody>& bodies) {
 
 // Each point's separation at the bodies' poses (separation() in SolverRows.h, lane by lane). The static
 // world's anchors are world points: its pose is the identity.
-void ContactBlocks::measureGaps(ContactBlock& block) const {
+void ContactBlocks::measureGaps(ContactBlock& block, const BlockAnchors& anchors) const {
     const Real *qa4[kLanes], *qb4[kLanes], *oa4[kLanes], *ob4[kLanes];
     Lanes qwa, qwb;
     for (int l = 0; l < kLanes; ++l) {
@@ -208,7 +212,8 @@ void ContactBlocks::measureGaps(ContactBlock& block) const {
     const Lanes3 qa = gatherRows(qa4), qb = gatherRows(qb4), oa = gatherRows(oa4), ob = gatherRows(ob4);
     for (int i = 0; i < block.points; ++i) {
         BlockPoint& q = block.p[i];
-        const Lanes3 pa = rotateLanes(qa, qwa, q.anchorA) + oa, pb = rotateLanes(qb, qwb, q.anchorB) + ob;
+        const Lanes3 pa = rotateLanes(qa, qwa, anchors.a[i]) + oa,
+                     pb = rotateLanes(qb, qwb, anchors.b[i]) + ob;
         q.gap = dot(q.row[0].dir, pb - pa);
     }
 }
@@ -252,10 +257,11 @@ void ContactBlocks::solve(const std::vector<SolverBody>& bodies, const Sweep& sw
     if (sweep.measureGaps) loadPoses(bodies);
     const Lanes zero(0), one(1), h(sweep.h), touch(-sweep.touchOverlap), impact(-sweep.restitutionThreshold),
         maxPush(-sweep.maxPushSpeed);
-    for (ContactBlock& block : m_blocks) {
+    for (size_t j = 0; j < m_blocks.size(); ++j) {
+        ContactBlock& block = m_blocks[j];
         // Positions do not change within a sweep, nor between a relax sweep and the next sub-step's velocity
         // sweep and push out: the gaps are measured once for all three.
-        if (sweep.measureGaps) measureGaps(block);
+        if (sweep.measureGaps) measureGaps(block, m_anchors[j]);
         // Each point's target: reach v_n = -bias, softly (see ContactSolver::solveContacts).
         Lanes bias[4], massScale[4], impulseScale[4];
         for (int i = 0; i < block.points; ++i) {
@@ -276,19 +282,20 @@ void ContactBlocks::solve(const std::vector<SolverBody>& bodies, const Sweep& sw
         BlockVelocity vel = gatherBlock(block, u);
         // soft: the push out's soft rows; otherwise every row is rigid (mass scale 1, impulse scale 0: the
         // same bits without those two products, as the impulses are finite and never -0).
+        // The push out's normal impulses are BlockPoint::pushed, started from the solved ones (which stay).
         auto solveNormal = [&](auto soft) {
             for (int i = 0; i < block.points; ++i) {
                 BlockPoint& q = block.p[i];
+                Lanes& impulse = decltype(soft)::value ? q.pushed : q.impulse[0];
                 const Lanes vn = rowSpeed(q.row[0], vel);
                 Lanes change;
                 if constexpr (decltype(soft)::value)
-                    change =
-                        (-q.row[0].mass) * massScale[i] * (vn + bias[i]) - impulseScale[i] * q.impulse[0];
+                    change = (-q.row[0].mass) * massScale[i] * (vn + bias[i]) - impulseScale[i] * impulse;
                 else
                     change = (-q.row[0].mass) * (vn + bias[i]);
-                const Lanes total = maxOf(zero, q.impulse[0] + change); // push only, never pull
-                applyRow(q.row[0], block.invMassA, block.invMassB, total - q.impulse[0], vel);
-                q.impulse[0] = total;
+                const Lanes total = maxOf(zero, impulse + change); // push only, never pull
+                applyRow(q.row[0], block.invMassA, block.invMassB, total - impulse, vel);
+                impulse = total;
                 q.maxNormal = maxOf(q.maxNormal, total);
             }
         };
@@ -297,6 +304,7 @@ void ContactBlocks::solve(const std::vector<SolverBody>& bodies, const Sweep& sw
         // there (bounded by the load the normal impulse carries) pushed stacked boxes sideways in every
         // sub-step. Measurements for both: ContactSolver.cpp, before solveContacts.
         if (sweep.pass == Pass::PushOut) {
+            for (int i = 0; i < block.points; ++i) block.p[i].pushed = block.p[i].impulse[0];
             solveNormal(std::true_type{});
             solveNormal(std::true_type{});
         } else {
@@ -319,18 +327,8 @@ void ContactBlocks::solve(const std::vector<SolverBody>& bodies, const Sweep& sw
     }
 }
 
-void ContactBlocks::saveSolved() {
-    m_saved.assign(m_velocity.begin(), m_velocity.end());
-    for (ContactBlock& block : m_blocks)
-        for (int i = 0; i < block.points; ++i)
-            for (int r = 0; r < 3; ++r) block.p[i].solved[r] = block.p[i].impulse[r];
-}
+void ContactBlocks::saveVelocities() { m_saved.assign(m_velocity.begin(), m_velocity.end()); }
 
-void ContactBlocks::restoreSolved() {
-    std::copy(m_saved.begin(), m_saved.end(), m_velocity.begin());
-    for (ContactBlock& block : m_blocks)
-        for (int i = 0; i < block.points; ++i)
-            for (int r = 0; r < 3; ++r) block.p[i].impulse[r] = block.p[i].solved[r];
-}
+void ContactBlocks::restoreVelocities() { std::copy(m_saved.begin(), m_saved.end(), m_velocity.begin()); }
 
 } // namespace physics

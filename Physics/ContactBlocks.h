@@ -27,12 +27,19 @@ struct BlockRow {
     Lanes mass;                           // effective mass along the row
 };
 
+// What the sweeps read and write of a point. Its anchors are apart (BlockAnchors): only measuring the gaps
+// reads them, and a sweep streams every block through the cache (at 10,000 bodies, from memory).
 struct BlockPoint {
-    BlockRow row[3];                        // the normal and the two tangents
-    Lanes3 anchorA, anchorB;                // body-local anchors (the normal is row[0].dir)
-    Lanes impulse[3], solved[3], maxNormal; // accumulated; before the push out; the most it pushed
-    Lanes approach;                         // v_n when the solve began
-    Lanes gap;                              // separation at the sub-step's poses
+    BlockRow row[3];          // the normal and the two tangents
+    Lanes impulse[3], pushed; // accumulated; the normal one through a push out (started from impulse[0])
+    Lanes maxNormal;          // the most it pushed
+    Lanes approach;           // v_n when the solve began
+    Lanes gap;                // separation at the sub-step's poses
+};
+
+// A block's points' body-local anchors (the normal is row[0].dir).
+struct BlockAnchors {
+    Lanes3 a[4], b[4];
 };
 
 struct ContactBlock {
@@ -79,10 +86,11 @@ public:
     // again (a push out: the normal impulses twice, no friction), each point measured against its gap
     // (measured first, at the bodies' poses, when the sweep says so).
     void solve(const std::vector<SolverBody>& bodies, const Sweep& sweep);
-    // The velocities and impulses the sub-step solved, kept before the push out and put back after it.
-    void saveSolved();
-    void restoreSolved();
-    // Body i's velocities now, and as saveSolved() kept them.
+    // The velocities the sub-step solved, kept before the push out and put back after it (the push out's
+    // normal impulses are kept apart from the solved ones: BlockPoint::pushed).
+    void saveVelocities();
+    void restoreVelocities();
+    // Body i's velocities now, and as saveVelocities() kept them.
     Vec3 velocity(size_t i) const { return vec(m_velocity[i].v); }
     Vec3 spin(size_t i) const { return vec(m_velocity[i].w); }
     Vec3 savedVelocity(size_t i) const { return vec(m_saved[i].v); }
@@ -102,10 +110,10 @@ private:
     const ContactBlock& at(const Manifold& m) const { return m_blocks[size_t(m.block)]; }
     ContactBlock& at(const Manifold& m) { return m_blocks[size_t(m.block)]; }
     int openBlock(int from); // the first block from this one with a free lane (or the end)
-    void fill(ContactBlock& block, int lane, Manifold& m, int index, const std::vector<SolverBody>& bodies);
+    void fill(int block, int lane, Manifold& m, int index, const std::vector<SolverBody>& bodies);
     void loadPoses(const std::vector<SolverBody>& bodies);
     static Vec3 vec(const Real* x) { return Vec3(x[0], x[1], x[2]); }
-    void measureGaps(ContactBlock& block) const;
+    void measureGaps(ContactBlock& block, const BlockAnchors& anchors) const;
 
     struct alignas(16) Velocity {
         Real v[4], w[4];
@@ -114,9 +122,10 @@ private:
         Real q[4], origin[4]; // rotation (x, y, z, w) and origin; the static world's is the identity
     };
     std::vector<ContactBlock> m_blocks;
-    std::vector<Velocity> m_velocity; // per solver body, then a zero slot and a scratch slot
-    std::vector<Velocity> m_saved;    // m_velocity as saveSolved() found it
-    std::vector<Pose> m_pose;         // per solver body, then the zero slot's identity
+    std::vector<BlockAnchors> m_anchors; // per block
+    std::vector<Velocity> m_velocity;    // per solver body, then a zero slot and a scratch slot
+    std::vector<Velocity> m_saved;       // m_velocity as saveVelocities() found it
+    std::vector<Pose> m_pose;            // per solver body, then the zero slot's identity
     // Packing: each body's last block so far, each block's lanes used, and a skip list to a block with a free
     // lane.
     std::vector<int> m_lastBlock, m_used, m_nextOpen;

@@ -284,15 +284,16 @@ void ContactSolver::solveContacts(Real h, ContactBlocks::Pass pass, bool measure
                                                   m_settings.restitutionThreshold, m_settings.maxPushSpeed});
 }
 
-// The velocities the sub-step solved for, and the impulses that produced them, before the push out.
+// The velocities the sub-step solved for, and the joints' impulses that produced them, before the push out
+// (the contacts' push out keeps its impulses apart: BlockPoint::pushed).
 void ContactSolver::saveVelocities() {
     saveJoints();
-    m_blocks.saveSolved();
+    m_blocks.saveVelocities();
 }
 
 void ContactSolver::restoreVelocities() {
     restoreJoints();
-    m_blocks.restoreSolved();
+    m_blocks.restoreVelocities();
 }
 
 // Semi-implicit Euler over h: the frame turns about the centre of mass. A body moves by its solved velocity
