@@ -4,19 +4,22 @@
 // before timing. Counters: ns per awake body-step in this thread's CPU time (what a shared, busy machine
 // disturbs least; the wall-clock figure is the benchmark's time and wall_ns_per_body_step), and its ratio to
 // the 1,000-box figure measured first in the same run. The issue's target: at 10,000 within 1.5x of the cost
-// at 1,000; main() prints whether it holds.
+// at 1,000; main() prints whether it holds, and where the growth is: each phase of the step's wall time per
+// body-step (the scene's own profile, iPhysicsSceneProfile.h) at each count, with its ratio to 1,000 boxes.
 #include "../StayOnThisCpu.h"
 #include "MathDeclarations.h"
 #include "RBDynamics.h"
 #include "World.h"
 #include "iPhysicsFrame.h"
 #include "iPhysicsScene.h"
+#include "iPhysicsSceneProfile.h"
 #include "iPhysicsSceneSettings.h"
 #include "iPhysicsSceneStats.h"
 
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -40,6 +43,23 @@ double threadCpuSeconds() {
 // Per box count: CPU ns per awake body-step.
 std::map<int, double>& perBodyNs() {
     static std::map<int, double> figures;
+    return figures;
+}
+
+// The step's phases as the scene's profile times them (wall clock), in the order a step runs them.
+struct Phase {
+    const char* name;
+    double PhysicsProfile::*time;
+};
+constexpr Phase kPhases[] = {
+    {"edits", &PhysicsProfile::edits},      {"collision", &PhysicsProfile::collision},
+    {"islands", &PhysicsProfile::islands},  {"integration", &PhysicsProfile::integration},
+    {"solver", &PhysicsProfile::solver},    {"continuous", &PhysicsProfile::continuous},
+    {"sleeping", &PhysicsProfile::sleeping}};
+constexpr size_t kPhaseCount = sizeof(kPhases) / sizeof(kPhases[0]);
+// Per box count: each phase's wall ns per awake body-step.
+std::map<int, std::array<double, kPhaseCount>>& perBodyPhaseNs() {
+    static std::map<int, std::array<double, kPhaseCount>> figures;
     return figures;
 }
 
@@ -72,6 +92,7 @@ void BM_StepScaling(benchmark::State& state) {
     for (int i = 0; i < kSettleSteps; ++i) advance();
     const long long before = statsOf(scene)->getStepCount();
     double wall = 0, cpu = 0;
+    std::array<double, kPhaseCount> phases{};
     size_t awake = 0;
     for (auto _ : state) {
         auto t0 = std::chrono::steady_clock::now();
@@ -81,12 +102,16 @@ void BM_StepScaling(benchmark::State& state) {
         double dt = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
         state.SetIterationTime(dt);
         wall += dt;
+        const PhysicsProfile& profile = profileOf(scene)->getProfile();
+        for (size_t k = 0; k < kPhaseCount; ++k) phases[k] += profile.*kPhases[k].time;
         awake = std::max(awake, statsOf(scene)->getAwakeBodyCount());
     }
     const double steps = double(statsOf(scene)->getStepCount() - before);
     const double bodySteps = steps * double(awake);
     const double ns = bodySteps > 0 ? 1e9 * cpu / bodySteps : 0.0;
     perBodyNs()[boxes] = ns;
+    for (size_t k = 0; k < kPhaseCount; ++k)
+        perBodyPhaseNs()[boxes][k] = bodySteps > 0 ? 1e9 * phases[k] / bodySteps : 0;
     state.counters["awake"] = double(awake);
     state.counters["steps"] = steps;
     state.counters["ns_per_body_step"] = ns;
@@ -126,6 +151,22 @@ int main(int argc, char** argv) {
     std::printf("\nCPU ns per awake body-step, ratio to %d boxes (%s):\n", kReference, where.c_str());
     for (const auto& f : figures)
         std::printf("  %6d boxes: %8.1f ns  x%.2f\n", f.first, f.second, f.second / ref->second);
+    const auto& phases = perBodyPhaseNs();
+    auto refPhases = phases.find(kReference);
+    if (refPhases != phases.end()) {
+        std::printf("\nEach phase's wall ns per awake body-step, and its ratio to %d boxes:\n  %-12s",
+                    kReference, "boxes");
+        for (const auto& f : phases) std::printf(" %14d", f.first);
+        std::printf("\n");
+        for (size_t k = 0; k < kPhaseCount; ++k) {
+            std::printf("  %-12s", kPhases[k].name);
+            for (const auto& f : phases) {
+                const double r = refPhases->second[k] > 0 ? f.second[k] / refPhases->second[k] : 0.0;
+                std::printf(" %7.0f (x%4.2f)", f.second[k], r);
+            }
+            std::printf("\n");
+        }
+    }
     auto big = figures.find(10000);
     if (big != figures.end())
         std::printf("issue 12 target (10,000 within 1.5x of 1,000): %s (x%.2f)\n",
