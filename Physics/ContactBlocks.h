@@ -100,6 +100,15 @@ public:
     void setNormalImpulse(const Manifold& m, int point, Real value) {
         at(m).p[point].impulse[0].setLane(m.lane, value);
     }
+    // A manifold's point's normal row as prepare() made it (restitution and shock propagation use it; kept
+    // here rather than copied into every manifold's points, which a step passes over several times).
+    NormalRow normalRow(const Manifold& m, int point) const {
+        const BlockRow& r = at(m).p[point].row[0];
+        const int l = m.lane;
+        return NormalRow{laneOf(r.armA, l), laneOf(r.armB, l), laneOf(r.turnA, l), laneOf(r.turnB, l),
+                         r.mass.lane(l)};
+    }
+    Real normalMass(const Manifold& m, int point) const { return at(m).p[point].row[0].mass.lane(m.lane); }
     // A manifold's point's gap as the last sweep that measured gaps found it (ContactBlocks::Sweep).
     Real gap(const Manifold& m, int point) const { return at(m).p[point].gap.lane(m.lane); }
     // The impulses back into the manifolds.
@@ -113,6 +122,9 @@ private:
     void fill(int block, int lane, Manifold& m, int index, const std::vector<SolverBody>& bodies);
     void loadPoses(const std::vector<SolverBody>& bodies);
     static Vec3 vec(const Real* x) { return Vec3(x[0], x[1], x[2]); }
+    static Vec3 laneOf(const Lanes3& v, int lane) {
+        return Vec3(v.x.lane(lane), v.y.lane(lane), v.z.lane(lane));
+    }
     void measureGaps(ContactBlock& block, const BlockAnchors& anchors) const;
 
     struct alignas(16) Velocity {

@@ -33,9 +33,6 @@ Lanes3 gatherVectors(const Vec3* v[kLanes]) {
 Lanes3 selectLanes3(LaneMask where, const Lanes3& yes, const Lanes3& no) {
     return {select(where, yes.x, no.x), select(where, yes.y, no.y), select(where, yes.z, no.z)};
 }
-void storeLaneTo(const Lanes3& l, int lane, Vec3& out) {
-    out = Vec3(l.x.lane(lane), l.y.lane(lane), l.z.lane(lane));
-}
 
 } // namespace
 
@@ -104,16 +101,10 @@ void ContactBlocks::prepare(std::vector<Manifold>& manifolds, const std::vector<
             }
             const BlockRow& n = q.row[0];
             q.approach = (dot(n.dir, velB - velA) + dot(n.armB, spinB)) - dot(n.armA, spinA);
-            for (int l = 0; l < kLanes; ++l) { // the normal row kept with the point
+            for (int l = 0; l < kLanes; ++l) { // the approach kept with the point (restitution)
                 const int k = block.manifold[l];
                 if (k < 0 || i >= manifolds[size_t(k)].count) continue;
-                ContactPoint& p = manifolds[size_t(k)].points[i];
-                storeLaneTo(n.armA, l, p.armA);
-                storeLaneTo(n.armB, l, p.armB);
-                storeLaneTo(n.turnA, l, p.turnA);
-                storeLaneTo(n.turnB, l, p.turnB);
-                p.normalMass = n.mass.lane(l);
-                p.approachSpeed = q.approach.lane(l);
+                manifolds[size_t(k)].points[i].approachSpeed = q.approach.lane(l);
             }
         }
     }

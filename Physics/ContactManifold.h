@@ -45,11 +45,8 @@ struct ContactPoint {
     Vec3 anchorA = Vec3::Zero(), anchorB = Vec3::Zero(); // the touching surface points, in each root's frame
     Vec3 point = Vec3::Zero(); // the contact point (world) at the step's start, midway between the two
     float depth = 0;           // overlap as the detector reported it (the four deepest are kept)
-    // The normal row (the solver's rows, tangents too, are in ContactBlocks.h; restitution and shock
-    // propagation use this one): r x n on each body, I^-1 (r x n), how an impulse along n turns each body,
-    // and the effective mass along n.
-    Vec3 armA = Vec3::Zero(), armB = Vec3::Zero(), turnA = Vec3::Zero(), turnB = Vec3::Zero();
-    Real normalMass = 0;
+    // (Its rows - the normal and the tangents: arms, turns, effective masses - are the contact blocks', from
+    // the solve's start to the next step's: ContactBlocks::normalRow.)
     Real normalImpulse = 0, tangentImpulse[2] = {0, 0}; // accumulated, per sub-step
     Real approachSpeed = 0;    // v_n when the solve began (negative: approaching), for restitution
     Real forceSpeed = 0;       // what this step's forces added to v_n (a_n dt)
@@ -77,6 +74,13 @@ struct Manifold {
     int count = 0;
     ContactPoint points[4];
     int block = -1, lane = 0; // where the solver's wide rows hold it during a solve (ContactBlocks.h)
+};
+
+// A point's row along its normal, as the contact blocks hold it (ContactBlocks::normalRow): r x n on each
+// body, I^-1 (r x n) (how an impulse along n turns each body), and the effective mass along n.
+struct NormalRow {
+    Vec3 armA, armB, turnA, turnB;
+    Real mass;
 };
 
 struct PairKey {

@@ -28,9 +28,10 @@
 
 namespace physics {
 
-// p's rows and approachSpeed (v_n after this step's forces) are set.
-void ContactSolver::prepareBounce(const SolverBody& a, const SolverBody& b, ContactPoint& p, Real dt) {
-    p.forceSpeed = p.normal.dot(b.dv - a.dv) + p.armB.dot(b.dw) - p.armA.dot(a.dw);
+// p's rows (row: its normal row) and approachSpeed (v_n after this step's forces) are set.
+void ContactSolver::prepareBounce(const SolverBody& a, const SolverBody& b, ContactPoint& p,
+                                  const NormalRow& row, Real dt) {
+    p.forceSpeed = p.normal.dot(b.dv - a.dv) + row.armB.dot(b.dw) - row.armA.dot(a.dw);
     const Real startSpeed = p.approachSpeed - 0.5f * p.forceSpeed;
     const Real startSeparation = p.normal.dot(startPoint(b, p.anchorB) - startPoint(a, p.anchorA));
     const Real accel = dt > 0.0f ? p.forceSpeed / dt : 0.0f;
@@ -63,13 +64,14 @@ void ContactSolver::applyRestitution() {
             Manifold& m = m_manifolds[k];
             ContactPoint& p = m.points[i];
             SolverBody &a = m_bodies[m.a], &b = m_bodies[m.b];
+            const NormalRow row = m_blocks.normalRow(m, i);
             const Real accel = dt > 0.0f ? p.forceSpeed / dt : 0.0f;
             const Real e = m.restitution;
             const Real leave2 = e * e * p.touchSpeed2 + 2.0f * accel * separation(a, b, p);
             const Real target = std::sqrt(std::max(Real(0), leave2)) - 0.5f * p.forceSpeed;
-            Real vn = normalSpeed(a, b, p);
-            Real total = std::max(Real(0), p.normalImpulse - p.normalMass * (vn - target));
-            applyNormalImpulse(a, b, p, total - p.normalImpulse);
+            Real vn = normalSpeed(a, b, p, row);
+            Real total = std::max(Real(0), p.normalImpulse - row.mass * (vn - target));
+            applyNormalImpulse(a, b, p, row, total - p.normalImpulse);
             p.normalImpulse = total;
             p.bounced = true;
         }

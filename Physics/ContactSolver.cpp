@@ -204,7 +204,8 @@ ContactSolver::Softness ContactSolver::contactSoftness(const Manifold& m, Real h
     Real load = m_settings.gravity;
     for (int i = 0; i < m.count; ++i) {
         const ContactPoint& p = m.points[i];
-        if (p.normalMass > 0.0f) load = std::max(load, p.normalImpulse / (h * p.normalMass));
+        const Real mass = m_blocks.normalMass(m, i);
+        if (mass > 0.0f) load = std::max(load, p.normalImpulse / (h * mass));
     }
     if (!(allowed > 0.0f) || !(load > allowed * m_omega * m_omega)) return m_soft;
     const Real omega = std::min(Real(std::sqrt(load / allowed)), Real(m_settings.maxContactTurn / h));
@@ -224,7 +225,8 @@ void ContactSolver::prepare(Real dt, Real h) {
         for (int i = 0; i < m.count; ++i) {
             ContactPoint& p = m.points[i];
             p.maxNormalImpulse = 0;
-            if (m.restitution > 0.0f) prepareBounce(a, b, p, dt); // read only by bouncing points
+            if (m.restitution > 0.0f)
+                prepareBounce(a, b, p, m_blocks.normalRow(m, i), dt); // read only by bouncing points
         }
     }
 }

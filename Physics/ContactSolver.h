@@ -197,7 +197,8 @@ private:
     void orderByLevel();
     void propagateShock(Real h);
     // ContactRestitution.cpp
-    static void prepareBounce(const SolverBody& a, const SolverBody& b, ContactPoint& p, Real dt);
+    static void prepareBounce(const SolverBody& a, const SolverBody& b, ContactPoint& p, const NormalRow& row,
+                              Real dt);
     void findBounces();
     void applyRestitution();
     void projectDeepOverlaps(); // and measures the overlap left (m_maxDepthAfter)

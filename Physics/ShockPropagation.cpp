@@ -122,15 +122,19 @@ void ContactSolver::propagateShock(Real h) {
         // Each point's gap at these poses, as the velocity sweep just used it (nothing has moved since, and
         // the pass moves no body: it holds for both passes).
         Real gaps[4];
-        for (int i = 0; i < m.count; ++i) gaps[i] = std::max(Real(0), m_blocks.gap(m, i));
+        NormalRow rows[4];
+        for (int i = 0; i < m.count; ++i) {
+            gaps[i] = std::max(Real(0), m_blocks.gap(m, i));
+            rows[i] = m_blocks.normalRow(m, i);
+        }
         for (int pass = 0; pass < 2; ++pass) // a box's corners: twice, like the normal passes
             for (int i = 0; i < m.count; ++i) {
                 ContactPoint& p = m.points[i];
                 const Real gap = gaps[i];
-                const Real vn = normalSpeed(a, b, p);
+                const Real vn = normalSpeed(a, b, p, rows[i]);
                 if (vn >= -gap / h) continue;
-                const Vec3& arm = upperIsB ? p.armB : p.armA;
-                const Vec3& turn = upperIsB ? p.turnB : p.turnA;
+                const Vec3& arm = upperIsB ? rows[i].armB : rows[i].armA;
+                const Vec3& turn = upperIsB ? rows[i].turnB : rows[i].turnA;
                 const Real k = upper.invMass + arm.dot(turn);
                 if (!(k > 0.0f)) continue;
                 const Real impulse = (-gap / h - vn) / k; // raises v_n to -gap / h

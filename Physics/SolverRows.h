@@ -8,17 +8,19 @@ namespace physics {
 
 inline bool movable(const SolverBody& b) { return b.root && b.invMass > 0.0f; }
 
-// The relative velocity of b against a at the point, along its normal.
-inline Real normalSpeed(const SolverBody& a, const SolverBody& b, const ContactPoint& p) {
-    return p.normal.dot(b.v - a.v) + p.armB.dot(b.w) - p.armA.dot(a.w);
+// The relative velocity of b against a at the point, along its normal (row: the point's normal row).
+inline Real normalSpeed(const SolverBody& a, const SolverBody& b, const ContactPoint& p,
+                        const NormalRow& row) {
+    return p.normal.dot(b.v - a.v) + row.armB.dot(b.w) - row.armA.dot(a.w);
 }
 
 // An impulse along the normal: on b, and its opposite on a.
-inline void applyNormalImpulse(SolverBody& a, SolverBody& b, const ContactPoint& p, Real impulse) {
+inline void applyNormalImpulse(SolverBody& a, SolverBody& b, const ContactPoint& p, const NormalRow& row,
+                               Real impulse) {
     a.v -= (a.invMass * impulse) * p.normal;
-    a.w -= impulse * p.turnA;
+    a.w -= impulse * row.turnA;
     b.v += (b.invMass * impulse) * p.normal;
-    b.w += impulse * p.turnB;
+    b.w += impulse * row.turnB;
 }
 
 // Where an anchor was at the step's start, where the contacts were found.
