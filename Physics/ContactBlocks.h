@@ -9,8 +9,9 @@
 // committed determinism hashes did not change). Immovable bodies (the static world, fixed and kinematic
 // bodies) are read but never written, so any number of lanes may share one.
 // The rows themselves (directions, arms, effective masses) are worked out by ContactSolver::prepare into
-// the lanes pack() gave each manifold; the impulses live here from pack() to unpack() (the sub-steps), then
-// go back to the manifolds for restitution, projection and next step's warm start.
+// the lanes pack() gave each manifold, and stay here until the next step's pack() (restitution and shock
+// propagation read the normal rows here: normalRow); the impulses live here from pack() to unpack() (the
+// sub-steps), then go back to the manifolds for restitution, projection and next step's warm start.
 #pragma once
 
 #include "ContactManifold.h"
