@@ -3,6 +3,7 @@
 // 5,000 bodies in the simple space, sparse (few contacts) and dense (several contacts per body), at rest and
 // moving (continuous sampling at work). Pair finding alone (sort-and-sweep against the persistent tree) and
 // whole calls of the simple and octree spaces on 1,000 and 10,000 boxes are in BroadphaseBench.cpp.
+#include "../PinnedBenchmarkMain.h"
 #include "DefaultSpace.h"
 #include "MathEigen.h"
 #include "Narrowphase.h"
@@ -120,3 +121,5 @@ BENCHMARK(BM_SimpleSpacePopulate)
     ->Unit(benchmark::kMillisecond);
 
 } // namespace
+
+GUARDIAN_PINNED_BENCHMARK_MAIN()

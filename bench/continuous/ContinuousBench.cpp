@@ -14,6 +14,8 @@
 
 #include "../TimedScene.h"
 
+#include "../PinnedBenchmarkMain.h"
+
 #include <benchmark/benchmark.h>
 
 #include <cmath>
@@ -86,4 +88,4 @@ BENCHMARK(BM_Pyramid210Awake)->Unit(benchmark::kMillisecond)->Iterations(3);
 BENCHMARK(BM_SpherePile1000)->Unit(benchmark::kMillisecond)->Iterations(1);
 BENCHMARK(BM_Bullets100)->Unit(benchmark::kMillisecond)->Iterations(20);
 
-BENCHMARK_MAIN();
+GUARDIAN_PINNED_BENCHMARK_MAIN()

@@ -34,6 +34,8 @@
 
 #include "../TimedScene.h"
 
+#include "../PinnedBenchmarkMain.h"
+
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
@@ -349,4 +351,4 @@ BENCHMARK_CAPTURE(BM_Chains, SpringStiff, Kind::SpringStiff)->Unit(benchmark::kM
 BENCHMARK(BM_AllKinds)->Unit(benchmark::kMillisecond)->Iterations(1);
 BENCHMARK(BM_HingeIterations)->Unit(benchmark::kMillisecond)->Iterations(1);
 
-BENCHMARK_MAIN();
+GUARDIAN_PINNED_BENCHMARK_MAIN()

@@ -11,6 +11,8 @@
 #include "iPhysicsSceneSettings.h"
 #include "iRigidBody.h"
 
+#include "../PinnedBenchmarkMain.h"
+
 #include <benchmark/benchmark.h>
 
 #include <cstdio>
@@ -89,6 +91,7 @@ BENCHMARK(stepChain)->Arg(100)->Arg(1000)->Unit(benchmark::kMillisecond);
 BENCHMARK(stepPhysicsFrameChain)->Arg(100)->Arg(1000)->Unit(benchmark::kMillisecond);
 
 int main(int argc, char** argv) {
+    stayOnThisCpuAndSayWhich(); // (PinnedBenchmarkMain.h)
     benchmark::Initialize(&argc, argv);
     TimeReporter reporter;
     benchmark::RunSpecifiedBenchmarks(&reporter);

@@ -8,6 +8,8 @@
 #include "iPhysicsSceneSettings.h"
 #include "iRigidBody.h"
 
+#include "../PinnedBenchmarkMain.h"
+
 #include <benchmark/benchmark.h>
 
 #include <cstdio>
@@ -82,6 +84,7 @@ BENCHMARK(stepBodies)
     ->Unit(benchmark::kMillisecond);
 
 int main(int argc, char** argv) {
+    stayOnThisCpuAndSayWhich(); // (PinnedBenchmarkMain.h)
     benchmark::Initialize(&argc, argv);
     RatioReporter reporter;
     benchmark::RunSpecifiedBenchmarks(&reporter);

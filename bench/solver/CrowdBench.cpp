@@ -10,6 +10,8 @@
 #include "iPhysicsScene.h"
 #include "iPhysicsSceneSettings.h"
 
+#include "../PinnedBenchmarkMain.h"
+
 #include <benchmark/benchmark.h>
 
 #include <sys/resource.h>
@@ -94,4 +96,4 @@ BENCHMARK(BM_HeavyOnLight)
     ->ArgsProduct({{100, 1000, 10000}, {4, 8, 16, 32, 64}})
     ->Unit(benchmark::kMillisecond)
     ->Iterations(3);
-BENCHMARK_MAIN();
+GUARDIAN_PINNED_BENCHMARK_MAIN()

@@ -10,6 +10,8 @@
 #include "iPhysicsScene.h"
 #include "iPhysicsSceneSettings.h"
 
+#include "../PinnedBenchmarkMain.h"
+
 #include <benchmark/benchmark.h>
 
 #include <cmath>
@@ -81,4 +83,4 @@ BENCHMARK(BM_Pyramid210)
     ->ArgsProduct({{4, 10, 16, 20}, {1, 0}})
     ->Unit(benchmark::kMillisecond)
     ->Iterations(1);
-BENCHMARK_MAIN();
+GUARDIAN_PINNED_BENCHMARK_MAIN()

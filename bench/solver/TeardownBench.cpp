@@ -12,6 +12,8 @@
 #include "iPhysicsScene.h"
 #include "iPhysicsSceneSettings.h"
 
+#include "../PinnedBenchmarkMain.h"
+
 #include <benchmark/benchmark.h>
 
 #include <chrono>
@@ -73,6 +75,7 @@ BENCHMARK(BM_Teardown)
 } // namespace
 
 int main(int argc, char** argv) {
+    stayOnThisCpuAndSayWhich(); // (PinnedBenchmarkMain.h)
     benchmark::Initialize(&argc, argv);
     benchmark::RunSpecifiedBenchmarks();
     benchmark::Shutdown();

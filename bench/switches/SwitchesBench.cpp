@@ -22,6 +22,8 @@
 
 #include "../TimedScene.h"
 
+#include "../PinnedBenchmarkMain.h"
+
 #include <benchmark/benchmark.h>
 
 #include <cmath>
@@ -148,4 +150,4 @@ BENCHMARK(BM_NinetyPercentAsleep_ListenersOff)->Unit(benchmark::kMillisecond)->I
 BENCHMARK(BM_NinetyPercentAsleep_InterpolationOff)->Unit(benchmark::kMillisecond)->Iterations(1);
 BENCHMARK(BM_NinetyPercentAsleep_ValidationOff)->Unit(benchmark::kMillisecond)->Iterations(1);
 
-BENCHMARK_MAIN();
+GUARDIAN_PINNED_BENCHMARK_MAIN()

@@ -3,6 +3,7 @@
 // interleaved pairs (Runner.h), and writes one CSV row per setting: the knobs, ns per body-step, the cost
 // ratio to the baseline, the error against the truth and its unit, and whether the setting is on the
 // scene's Pareto front (cost ratio, error). scripts/tradeoff.sh builds it, runs it and plots the CSV.
+#include "../StayOnThisCpu.h"
 #include "Pareto.h"
 #include "Plan.h"
 #include "Runner.h"
@@ -53,6 +54,12 @@ int usage(int code) {
 } // namespace
 
 int main(int argc, char** argv) {
+    // Each setting and its baseline are timed in interleaved pairs: both on one core (StayOnThisCpu.h).
+    const int cpu = stayOnThisCpu();
+    if (cpu >= 0)
+        std::fprintf(stderr, "bench_tradeoff: kept on CPU %d\n", cpu);
+    else
+        std::fprintf(stderr, "bench_tradeoff: not kept on one CPU\n");
     bool quick = false;
     int repeats = -1;
     std::string out = "tradeoff.csv", only;
