@@ -6,7 +6,7 @@
 // the 1,000-box figure measured first in the same run. The target: at 10,000 within 1.5x of the cost
 // at 1,000; main() prints whether it holds, and where the growth is: each phase of the step's wall time per
 // body-step (the scene's own profile, iPhysicsSceneProfile.h) at each count, with its ratio to 1,000 boxes.
-#include "../StayOnThisCpu.h"
+#include "../PinnedBenchmarkMain.h"
 #include "MathDeclarations.h"
 #include "RBDynamics.h"
 #include "World.h"
@@ -136,9 +136,9 @@ void registerCount(int boxes) {
 } // namespace
 
 int main(int argc, char** argv) {
-    // Every count on the same core (StayOnThisCpu.h), the 1,000-box reference first, so that every later
-    // count has its ratio in the same run.
-    const int cpu = stayOnThisCpu();
+    // Every count on the same core (PinnedBenchmarkMain.h), the 1,000-box reference first, so that every
+    // later count has its ratio in the same run.
+    const int cpu = stayOnThisCpuAndSayWhich();
     for (int boxes : {kReference, 100, 300, 3000, 10000}) registerCount(boxes);
     benchmark::Initialize(&argc, argv);
     if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
