@@ -21,14 +21,12 @@ public:
         preparePoint(a, b);
         m_rotationError = rotationError(worldBasis(a, m_frameA), worldBasis(b, m_frameB));
         const Mat3 sA = cross(m_point.rA), sB = cross(m_point.rB);
-        Mat6 k;
-        k.topLeftCorner<3, 3>() =
+        // K = [P C; C^T R]: the point block, the coupling and the orientation block.
+        const Mat3 p =
             (a.invMass + b.invMass) * Mat3::Identity() - sA * a.invInertia * sA - sB * b.invInertia * sB;
-        k.topRightCorner<3, 3>() = -(sA * a.invInertia + sB * b.invInertia);
-        k.bottomLeftCorner<3, 3>() = a.invInertia * sA + b.invInertia * sB;
-        k.bottomRightCorner<3, 3>() = a.invInertia + b.invInertia;
-        m_movable = k.determinant() != 0; // else both immovable
-        if (m_movable) m_mass = k.inverse();
+        const Mat3 c = -(sA * a.invInertia + sB * b.invInertia);
+        const Mat3 r = a.invInertia + b.invInertia;
+        m_movable = invertBlocks(p, c, r, m_mass); // else both immovable
     }
 
     // The six rows as one block (K is 6x6): one block after the other, the point and the orientation fought
@@ -57,6 +55,27 @@ public:
 private:
     using Vec6 = Eigen::Matrix<Real, 6, 1>;
     using Mat6 = Eigen::Matrix<Real, 6, 6>;
+
+    // The inverse of the symmetric K = [P C; C^T R] through the Schur complement of R, S = P - C R^-1 C^T:
+    //   K^-1 = [S^-1, -S^-1 C R^-1; -R^-1 C^T S^-1, R^-1 + R^-1 C^T S^-1 C R^-1].
+    // K is singular exactly when R or S is (det K = det R det S); R = IA^-1 + IB^-1 is singular when neither
+    // body can turn about some axis, and then neither can the weld's orientation rows. False when singular.
+    // (Two closed-form 3x3 inverses: Eigen's 6x6 LU was a fifth of a drop-in package's compile time.)
+    static bool invertBlocks(const Mat3& p, const Mat3& c, const Mat3& r, Mat6& out) {
+        if (r.determinant() == 0) return false;
+        const Mat3 rInv = r.inverse();
+        const Mat3 cr = c * rInv; // C R^-1 (and its transpose R^-1 C^T: R is symmetric)
+        const Mat3 s = p - cr * c.transpose();
+        if (s.determinant() == 0) return false;
+        const Mat3 sInv = s.inverse();
+        const Mat3 upperRight = -sInv * cr;
+        out.topLeftCorner<3, 3>() = sInv;
+        out.topRightCorner<3, 3>() = upperRight;
+        out.bottomLeftCorner<3, 3>() = upperRight.transpose();
+        out.bottomRightCorner<3, 3>() = rInv - cr.transpose() * upperRight;
+        return true;
+    }
+
     Mat6 m_mass = Mat6::Zero();
     bool m_movable = false;
 };
