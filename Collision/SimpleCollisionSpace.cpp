@@ -1,6 +1,6 @@
 // SimpleCollisionSpace.cpp - membership and the populate call of the collision space; each member's entry is
 // gathered in SpaceGather.cpp, the candidate pairs come from its broadphase (SweepAndPrune.cpp,
-// TreeBroadphase.cpp). The pair tests are in ContinuousPairTest.cpp, listeners in SpaceListeners.cpp, queries
+// TreeBroadphase.cpp). The pair tests are in SpaceNarrowPhase.cpp, listeners in SpaceListeners.cpp, queries
 // in SpaceQueries.cpp.
 #include "SimpleCollisionSpace.h"
 #include "Broadphase.h"

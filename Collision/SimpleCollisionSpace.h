@@ -15,7 +15,7 @@
 //     bodies that are each PHYS_FixedInSpace or sleeping (RBDynamics::sleeping; a bodiless plane is fixed);
 //     a pair with a sensor is tested at the current pose for overlap only (no contacts);
 //  4. runs the exact pair test at the current pose, and when nothing touches and the pair moved fast,
-//     the continuous tests (ContinuousPairTest.cpp);
+//     the continuous tests (SpaceNarrowPhase.cpp);
 //  5. notifies listeners (SpaceListeners.cpp) and contact observers (SpaceContactEvents.cpp).
 // At most the contact budget's contacts are reported (iContactBudget.h): once it is full, the remaining
 // candidate pairs are dropped untested.

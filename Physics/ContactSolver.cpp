@@ -327,12 +327,4 @@ void ContactSolver::moveBodies(Real h) {
         if (movable(m_bodies[i])) settleBody(m_bodies[i], m_turned[i]);
 }
 
-void ContactSolver::clear() {
-    m_last.clear();
-    m_lastIndex.clear();
-    m_manifolds.clear();
-    m_bodies.clear();
-    m_bodyIndex.clear();
-}
-
 } // namespace physics

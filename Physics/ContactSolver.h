@@ -150,8 +150,6 @@ public:
         solve(dt, access);
     }
 
-    // Forgets last step's impulses (no warm start next step).
-    void clear();
     // What the next step reads of the last (snapshots): its manifolds with their impulses, and its overlaps.
     struct Memory {
         std::vector<Manifold> last;

@@ -1,5 +1,6 @@
-// ContinuousPairTest.cpp - one candidate pair of the simple space: the exact test at the current pose, then
-// (when the pair moved fast since the previous call) an exact sweep for spheres and sampling of the motion.
+// SpaceNarrowPhase.cpp - the space's narrow phase (step 4 of SimpleCollisionSpace.h), one candidate pair at a
+// time: the exact test at the current pose, then (when the pair moved fast since the previous call) an exact
+// sweep for spheres and sampling of the motion.
 //
 // What is guaranteed, with delta > 0 and samplesPerSecond > 0:
 //  * a pair touching at the current pose is always reported, with current-pose contacts;
