@@ -11,6 +11,7 @@
 #include "ContactResolution.h"
 #include "ContactSolver.h"
 #include "ContinuousStage.h"
+#include "Islands.h"
 #include "StepProfiler.h"
 #include "iDebugDrawable.h"
 #include "iPhysicsScene.h"

@@ -18,6 +18,7 @@ set(GUARDIAN_PHYSICS_SOURCES
   ContactBlocksPrepare.cpp
   ContactManifolds.cpp
   ContactResolution.cpp
+  Islands.cpp
   ContactRestitution.cpp
   ContactSolver.cpp
   ContinuousStage.cpp
@@ -42,6 +43,7 @@ set(GUARDIAN_PHYSICS_HEADERS
   ContactManifold.h
   Lanes.h
   ContactResolution.h
+  Islands.h
   ContactSolver.h
   SolverRows.h
   ContinuousStage.h
