@@ -93,7 +93,7 @@ void ContactBlocks::fill(int j, int lane, Manifold& m, int index, const std::vec
     block.frictionCoefficient.setLane(lane, m.friction);
     const bool friction = m.friction > 0.0f; // a frictionless lane's tangent rows and impulses stay zero
     for (int i = 0; i < m.count; ++i) {
-        const ContactPoint& p = m.points[i];
+        const ManifoldPoint& p = m.points[i];
         BlockPoint& q = block.p[i];
         setLanes3(anchors.a[i], lane, p.anchorA);
         setLanes3(anchors.b[i], lane, p.anchorB);
@@ -152,7 +152,7 @@ void ContactBlocks::unpack(std::vector<Manifold>& manifolds) const {
         if (m.block < 0) continue;
         const ContactBlock& block = at(m);
         for (int i = 0; i < m.count; ++i) {
-            ContactPoint& p = m.points[i];
+            ManifoldPoint& p = m.points[i];
             const BlockPoint& q = block.p[i];
             p.normalImpulse = q.impulse[0].lane(m.lane);
             p.tangentImpulse[0] = q.impulse[1].lane(m.lane);

@@ -14,8 +14,8 @@
 // sub-steps), then go back to the manifolds for restitution, projection and next step's warm start.
 #pragma once
 
-#include "ContactManifold.h"
 #include "Lanes.h"
+#include "SolverData.h"
 
 #include <cstdint>
 #include <vector>

@@ -72,7 +72,7 @@ void ContactBlocks::prepare(std::vector<Manifold>& manifolds, const std::vector<
             for (int l = 0; l < kLanes; ++l) {
                 const int k = block.manifold[l];
                 const bool here = k >= 0 && i < manifolds[size_t(k)].count;
-                const ContactPoint* p = here ? &manifolds[size_t(k)].points[i] : nullptr;
+                const ManifoldPoint* p = here ? &manifolds[size_t(k)].points[i] : nullptr;
                 point[l] = p ? &p->point : &zeroVector;
                 dirs[0][l] = p ? &p->normal : &zeroVector;
                 dirs[1][l] = p ? &p->tangent[0] : &zeroVector;

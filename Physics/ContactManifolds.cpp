@@ -94,7 +94,7 @@ void ContactSolver::buildManifolds(const CollisionContact* contacts, size_t coun
             m.size = std::fmin(c.g1->getBoundingRadius(), c.g2->getBoundingRadius());
         }
         Manifold& m = m_manifolds[pair.manifold];
-        ContactPoint p;
+        ManifoldPoint p;
         p.normal = n;
         tangentBasis(n, p.tangent);
         p.depth = std::max(0.0f, c.depth);
@@ -109,7 +109,7 @@ void ContactSolver::buildManifolds(const CollisionContact* contacts, size_t coun
         if (m.count < 4) {
             m.points[m.count++] = p;
         } else { // keep the four deepest
-            ContactPoint* shallowest =
+            ManifoldPoint* shallowest =
                 std::min_element(m.points, m.points + 4, [](auto& x, auto& y) { return x.depth < y.depth; });
             if (shallowest->depth < p.depth) *shallowest = p;
         }
@@ -133,7 +133,7 @@ void ContactSolver::keepPoints(const SolverBodyAccess& access,
         const Vec3 n = m.count ? m.points[0].normal : old.points[0].normal;
         const int reportedCount = m.count;
         for (int j = 0; j < old.count && m.count < 4; ++j) {
-            const ContactPoint& o = old.points[j];
+            const ManifoldPoint& o = old.points[j];
             if (o.bounced) continue; // it left the surface
             bool known = false;
             for (int i = 0; i < reportedCount && !known; ++i)
@@ -143,7 +143,7 @@ void ContactSolver::keepPoints(const SolverBodyAccess& access,
             Real separation = n.dot(gap);
             if (separation <= 0.0f || separation > keep || (gap - separation * n).norm() > keep)
                 continue; // touching again is the detector's to report; too far apart or slid off: broken
-            ContactPoint p = o;
+            ManifoldPoint p = o;
             p.normal = n;
             tangentBasis(n, p.tangent);
             p.point = 0.5f * (onA + onB);
@@ -184,9 +184,9 @@ void ContactSolver::matchPreviousImpulses() {
         if (!last) continue;
         const Manifold& old = m_last[*last];
         for (int i = 0; i < m.count; ++i) {
-            ContactPoint& p = m.points[i];
+            ManifoldPoint& p = m.points[i];
             // The old point at the same place on body a.
-            const ContactPoint* match = nullptr;
+            const ManifoldPoint* match = nullptr;
             Real best = best0;
             for (int j = 0; j < old.count; ++j) {
                 Real d2 = (old.points[j].anchorA - p.anchorA).squaredNorm();

@@ -29,7 +29,7 @@
 namespace physics {
 
 // p's rows (row: its normal row) and approachSpeed (v_n after this step's forces) are set.
-void ContactSolver::prepareBounce(const SolverBody& a, const SolverBody& b, ContactPoint& p,
+void ContactSolver::prepareBounce(const SolverBody& a, const SolverBody& b, ManifoldPoint& p,
                                   const NormalRow& row, Real dt) {
     p.forceSpeed = p.normal.dot(b.dv - a.dv) + row.armB.dot(b.dw) - row.armA.dot(a.dw);
     const Real startSpeed = p.approachSpeed - 0.5f * p.forceSpeed;
@@ -62,7 +62,7 @@ void ContactSolver::applyRestitution() {
         for (size_t j = 0; j < m_bouncing.size(); ++j) {
             const auto& [k, i] = m_bouncing[sweep % 2 ? m_bouncing.size() - 1 - j : j];
             Manifold& m = m_manifolds[k];
-            ContactPoint& p = m.points[i];
+            ManifoldPoint& p = m.points[i];
             SolverBody &a = m_bodies[m.a], &b = m_bodies[m.b];
             const NormalRow row = m_blocks.normalRow(m, i);
             const Real accel = dt > 0.0f ? p.forceSpeed / dt : 0.0f;

@@ -203,7 +203,7 @@ ContactSolver::Softness ContactSolver::contactSoftness(const Manifold& m, Real h
     // impulses held up (a stack's lower contacts, a heavy body on a light one).
     Real load = m_settings.gravity;
     for (int i = 0; i < m.count; ++i) {
-        const ContactPoint& p = m.points[i];
+        const ManifoldPoint& p = m.points[i];
         const Real mass = m_blocks.normalMass(m, i);
         if (mass > 0.0f) load = std::max(load, p.normalImpulse / (h * mass));
     }
@@ -223,7 +223,7 @@ void ContactSolver::prepare(Real dt, Real h) {
     for (Manifold& m : m_manifolds) {
         const SolverBody &a = m_bodies[m.a], &b = m_bodies[m.b];
         for (int i = 0; i < m.count; ++i) {
-            ContactPoint& p = m.points[i];
+            ManifoldPoint& p = m.points[i];
             p.maxNormalImpulse = 0;
             if (m.restitution > 0.0f)
                 prepareBounce(a, b, p, m_blocks.normalRow(m, i), dt); // read only by bouncing points

@@ -26,9 +26,9 @@
 #pragma once
 
 #include "ContactBlocks.h"
-#include "ContactManifold.h"
 #include "FlatMap.h"
 #include "MathBridge.h"
+#include "SolverData.h"
 #include "iContactSettings.h"
 
 #include <cstddef>
@@ -195,8 +195,8 @@ private:
     void orderByLevel();
     void propagateShock(Real h);
     // ContactRestitution.cpp
-    static void prepareBounce(const SolverBody& a, const SolverBody& b, ContactPoint& p, const NormalRow& row,
-                              Real dt);
+    static void prepareBounce(const SolverBody& a, const SolverBody& b, ManifoldPoint& p,
+                              const NormalRow& row, Real dt);
     void findBounces();
     void applyRestitution();
     void projectDeepOverlaps(); // and measures the overlap left (m_maxDepthAfter)

@@ -13,7 +13,7 @@
 // not (a chain of links: Jolt's PointConstraintPart and RotationEulerConstraintPart).
 #pragma once
 
-#include "ContactManifold.h"
+#include "SolverData.h"
 
 #include <algorithm>
 #include <limits>

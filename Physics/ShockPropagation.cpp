@@ -129,7 +129,7 @@ void ContactSolver::propagateShock(Real h) {
         }
         for (int pass = 0; pass < 2; ++pass) // a box's corners: twice, like the normal passes
             for (int i = 0; i < m.count; ++i) {
-                ContactPoint& p = m.points[i];
+                ManifoldPoint& p = m.points[i];
                 const Real gap = gaps[i];
                 const Real vn = normalSpeed(a, b, p, rows[i]);
                 if (vn >= -gap / h) continue;

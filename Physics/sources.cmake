@@ -40,7 +40,7 @@ set(GUARDIAN_PHYSICS_HEADERS
   Composite.h
   FrameDriver.h
   ContactBlocks.h
-  ContactManifold.h
+  SolverData.h
   Lanes.h
   ContactResolution.h
   Islands.h

@@ -1,5 +1,5 @@
-// ContactManifold.h - the solver's working data: a body's velocity state and frames, a contact point with its
-// accumulated impulses, and a manifold of up to four points between two geometries.
+// SolverData.h - the solver's working data: a body's velocity state and frames, a contact point of a manifold
+// (ManifoldPoint) with its accumulated impulses, and a manifold of up to four points between two geometries.
 #pragma once
 
 #include "MathBridge.h"
@@ -39,7 +39,7 @@ struct SolverBody {
     int slot = -1; // its index in the solver's bodies (what a body access keeps per body is kept by it)
 };
 
-struct ContactPoint {
+struct ManifoldPoint {
     Vec3 normal = Vec3::UnitY();                         // from body a toward body b
     Vec3 tangent[2] = {Vec3::UnitX(), Vec3::UnitZ()};    // a fixed basis derived from the normal
     Vec3 anchorA = Vec3::Zero(), anchorB = Vec3::Zero(); // the touching surface points, in each root's frame
@@ -72,7 +72,7 @@ struct Manifold {
     bool bounces = false; // a point bounces this step: its overlap is projected out entirely
     Real projectable = 0; // how much further its overlap may still be projected out this step
     int count = 0;
-    ContactPoint points[4];
+    ManifoldPoint points[4];
     int block = -1, lane = 0; // where the solver's wide rows hold it during a solve (ContactBlocks.h)
 };
 
