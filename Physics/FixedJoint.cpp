@@ -60,7 +60,7 @@ private:
     //   K^-1 = [S^-1, -S^-1 C R^-1; -R^-1 C^T S^-1, R^-1 + R^-1 C^T S^-1 C R^-1].
     // K is singular exactly when R or S is (det K = det R det S); R = IA^-1 + IB^-1 is singular when neither
     // body can turn about some axis, and then neither can the weld's orientation rows. False when singular.
-    // (Two closed-form 3x3 inverses: Eigen's 6x6 LU was a fifth of a drop-in package's compile time.)
+    // (Two closed-form 3x3 inverses: Eigen's 6x6 LU was a tenth of a drop-in package's compile time.)
     static bool invertBlocks(const Mat3& p, const Mat3& c, const Mat3& r, Mat6& out) {
         if (r.determinant() == 0) return false;
         const Mat3 rInv = r.inverse();

@@ -40,7 +40,8 @@ if [ "${1:-}" != "--quick" ]; then
   # long runs (a 10^4-step soak: 41 s under ASan) and the testbed window ran in the g++ pass: not run again. The
   # double-precision companion library and its tests ran above too (GUARDIAN_DOUBLE_COMPANION). So did the
   # ten-second awake pyramid, this pass's longest test (35 s of its 185 s under ASan): its solver code runs here
-  # in shorter tests, and the determinism hashes checked here say the eight lanes give the four lanes' bits.
+  # in shorter tests, and the determinism hashes checked here say the eight lanes give the four lanes' bits
+  # (for the two reference scenes).
   avx=OFF
   if grep -qw avx /proc/cpuinfo 2>/dev/null; then avx=ON; fi
   run_suite "clang++ with sanitizers (ASan+UBSan, AVX $avx)" build-asan "-LE integration|extremes -E ^Resolution.PyramidOf210Boxes" -- \

@@ -168,6 +168,26 @@ TEST(FixedCantilever, SagsLittleAndReactsWithMgAndMgL) {
     weld->Delete();
 }
 
+namespace {
+
+// How far a welded body strays from its place in the other's frame (welded at offset `local` there, with no
+// turn between them): the worst offset and the worst turn over the steps recorded.
+struct WeldDrift {
+    iRigidBody *a, *b;
+    Vector local;
+    float offset = 0, turn = 0;
+    void record() {
+        const RBDynamics &da = a->getDynamics(), &db = b->getDynamics();
+        const Matrix back = da.orientation.transpose();
+        offset = std::max(offset, ((db.position - da.position) * back - local).length());
+        const Matrix rel = db.orientation * back; // identity at creation
+        const float trace = rel.m11 + rel.m22 + rel.m33;
+        turn = std::max(turn, std::acos(std::clamp((trace - 1) / 2, -1.0f, 1.0f)));
+    }
+};
+
+} // namespace
+
 // Two boxes welded together, one of them spinning fast: after the first step they tumble and fall as one
 // rigid body, the second's pose in the first's frame kept within 1 mm and 0.01 rad for 3 s.
 TEST(FixedPair, FallsAndTumblesAsOneBody) {
@@ -177,19 +197,11 @@ TEST(FixedPair, FallsAndTumblesAsOneBody) {
     iFixedJoint* weld = CreateFixedJoint(a, b, Vector(0.3f, 10, 0));
     ASSERT_NE(weld, nullptr);
     a->getDynamics().angularVelocity = Vector(1, 2, 3);
-    const Vector local0(0.6f, 0, 0);
-    float worstOffset = 0, worstTurn = 0;
-    s.recorder.fn = [&] {
-        const RBDynamics &da = a->getDynamics(), &db = b->getDynamics();
-        const Matrix back = da.orientation.transpose();
-        worstOffset = std::max(worstOffset, ((db.position - da.position) * back - local0).length());
-        const Matrix rel = db.orientation * back; // identity at creation
-        const float trace = rel.m11 + rel.m22 + rel.m33;
-        worstTurn = std::max(worstTurn, std::acos(std::clamp((trace - 1) / 2, -1.0f, 1.0f)));
-    };
+    WeldDrift drift{a, b, Vector(0.6f, 0, 0)};
+    s.recorder.fn = [&] { drift.record(); };
     s.seconds(3);
-    EXPECT_LT(worstOffset, 1e-3f);
-    EXPECT_LT(worstTurn, 0.01f);
+    EXPECT_LT(drift.offset, 1e-3f);
+    EXPECT_LT(drift.turn, 0.01f);
     EXPECT_GT(a->getDynamics().angularVelocity.length(), 0.3f); // it did tumble
     weld->Delete();
 }
@@ -204,19 +216,11 @@ TEST(FixedPair, HoldsAtAMassRatioOfTenThousandOnALongArm) {
     iFixedJoint* weld = CreateFixedJoint(heavy, light, Vector(0.3f, 10, 0));
     ASSERT_NE(weld, nullptr);
     heavy->getDynamics().angularVelocity = Vector(1, 2, 3);
-    const Vector local0(3, 0, 0);
-    float worstOffset = 0, worstTurn = 0;
-    s.recorder.fn = [&] {
-        const RBDynamics &dh = heavy->getDynamics(), &dl = light->getDynamics();
-        const Matrix back = dh.orientation.transpose();
-        worstOffset = std::max(worstOffset, ((dl.position - dh.position) * back - local0).length());
-        const Matrix rel = dl.orientation * back;
-        const float trace = rel.m11 + rel.m22 + rel.m33;
-        worstTurn = std::max(worstTurn, std::acos(std::clamp((trace - 1) / 2, -1.0f, 1.0f)));
-    };
+    WeldDrift drift{heavy, light, Vector(3, 0, 0)};
+    s.recorder.fn = [&] { drift.record(); };
     s.seconds(3);
-    EXPECT_LT(worstOffset, 2e-3f);
-    EXPECT_LT(worstTurn, 5e-3f);
+    EXPECT_LT(drift.offset, 2e-3f);
+    EXPECT_LT(drift.turn, 5e-3f);
     EXPECT_GT(heavy->getDynamics().angularVelocity.length(), 1.0f); // it did spin
     weld->Delete();
 }
