@@ -1,7 +1,9 @@
 // FixedJoint.cpp - a weld: B keeps its pose relative to A (iFixedJoint.h).
 //
 // Rows (JointRows.h): the orientation block (C = the rotation vector from A's frame to B's, Cdot = wB - wA)
-// and the point block (C = pB - pA), solved together as one 6x6 block.
+// and the point block, solved together as one 6x6 block. The point block holds the lighter body's centre of
+// mass where B's frame, put on A's, carries it (prepare): at the anchors (C = pB - pA) it is the same
+// constraint, but not in float when an arm is long against its body's size.
 #include "Joint.h"
 
 #include "iFixedJoint.h"
@@ -19,14 +21,22 @@ public:
 
     void prepare(const SolverBody& a, const SolverBody& b, Real) override {
         preparePoint(a, b);
-        m_rotationError = rotationError(worldBasis(a, m_frameA), worldBasis(b, m_frameB));
-        const Mat3 sA = cross(m_point.rA), sB = cross(m_point.rB);
+        const Quat basisA = worldBasis(a, m_frameA), basisB = worldBasis(b, m_frameB);
+        m_rotationError = rotationError(basisA, basisB);
+        // The point rows act at the lighter body's centre of mass, not at the anchor: the same constraint
+        // (with the orientation rows), but that body's rows no longer turn it. At the anchor, a small body
+        // welded far from it took two torques of about L times the force that all but cancelled: a 2 cm box
+        // welded 100 m from a heavy one flew apart. The target of that point: where B's frame, put back on
+        // A's, would carry it (the anchors' offset plus the point's turn by the rotation error).
+        m_pointShift = b.invMass >= a.invMass ? m_point.rB : m_point.rA;
+        m_point.rA -= m_pointShift;
+        m_point.rB -= m_pointShift;
+        m_pointError += (basisA * basisB.conjugate()) * m_pointShift - m_pointShift;
         // K = [P C; C^T R]: the point block, the coupling and the orientation block.
-        const Mat3 p =
-            (a.invMass + b.invMass) * Mat3::Identity() - sA * a.invInertia * sA - sB * b.invInertia * sB;
+        const Mat3 sA = cross(m_point.rA), sB = cross(m_point.rB);
         const Mat3 c = -(sA * a.invInertia + sB * b.invInertia);
         const Mat3 r = a.invInertia + b.invInertia;
-        m_movable = invertBlocks(p, c, r, m_mass); // else both immovable
+        m_movable = invertBlocks(a, b, m_point.rA - m_point.rB, c, r, m_mass); // else both immovable
     }
 
     // The six rows as one block (K is 6x6): one block after the other, the point and the orientation fought
@@ -61,11 +71,18 @@ private:
     // K is singular exactly when R or S is (det K = det R det S); R = IA^-1 + IB^-1 is singular when neither
     // body can turn about some axis, and then neither can the weld's orientation rows. False when singular.
     // (Two closed-form 3x3 inverses: Eigen's 6x6 LU was a tenth of a drop-in package's compile time.)
-    static bool invertBlocks(const Mat3& p, const Mat3& c, const Mat3& r, Mat6& out) {
+    static bool invertBlocks(const SolverBody& a, const SolverBody& b, const Vec3& arm, const Mat3& c,
+                             const Mat3& r, Mat6& out) {
         if (r.determinant() == 0) return false;
         const Mat3 rInv = r.inverse();
         const Mat3 cr = c * rInv; // C R^-1 (and its transpose R^-1 C^T: R is symmetric)
-        const Mat3 s = p - cr * c.transpose();
+        // S = P - C R^-1 C^T is formed directly, not by the subtraction: with IA^-1 = a, IB^-1 = b it is
+        // (1/mA + 1/mB) 1 + [d]x Q [d]x^T, Q = a (a + b)^-1 b = (IA + IB)^-1, d = rA - rB. Subtracted, P's
+        // L^2 I^-1 terms cancel: a 2 cm box welded 100 m from its anchor lost S to rounding (zero; the weld
+        // did nothing), where S is 1/m.
+        const Mat3 q = a.invInertia * rInv * b.invInertia, d = cross(arm);
+        const Mat3 s =
+            (a.invMass + b.invMass) * Mat3::Identity() + d * (0.5f * (q + q.transpose())) * d.transpose();
         if (s.determinant() == 0) return false;
         const Mat3 sInv = s.inverse();
         const Mat3 upperRight = -sInv * cr;

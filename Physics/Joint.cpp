@@ -193,6 +193,7 @@ void Joint::restore() {
 bool Joint::finish(Real h) {
     Vec3 linear = m_usesPoint ? m_point.impulse : Vec3::Zero();
     Vec3 angular = m_usesOrientation ? m_orientation.impulse : Vec3::Zero();
+    if (m_usesPoint) angular -= m_pointShift.cross(m_point.impulse); // about the anchors
     for (int i = 0; i < m_rowCount; ++i) {
         const JointRow& r = m_rows[i];
         if (r.kind == RowKind::Off) continue;
