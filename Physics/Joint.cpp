@@ -193,7 +193,6 @@ void Joint::restore() {
 bool Joint::finish(Real h) {
     Vec3 linear = m_usesPoint ? m_point.impulse : Vec3::Zero();
     Vec3 angular = m_usesOrientation ? m_orientation.impulse : Vec3::Zero();
-    if (m_usesPoint) angular -= m_pointShift.cross(m_point.impulse); // about the anchors
     for (int i = 0; i < m_rowCount; ++i) {
         const JointRow& r = m_rows[i];
         if (r.kind == RowKind::Off) continue;
@@ -202,6 +201,7 @@ bool Joint::finish(Real h) {
         else
             angular += r.impulse * r.armB;
     }
+    angular -= m_pointShift.cross(linear); // about the anchors
     m_force = linear / h;
     m_torque = angular / h;
     if (m_broken || !(m_force.norm() > m_breakForce || m_torque.norm() > m_breakTorque)) return false;

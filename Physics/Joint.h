@@ -99,8 +99,8 @@ protected:
     PointBlock m_point;
     OrientationBlock m_orientation;
     Vec3 m_pointError = Vec3::Zero(), m_rotationError = Vec3::Zero(); // C of the blocks, as prepared
-    // Where the point block's rows act, from the anchors (zero: at them). The reaction torque is reported
-    // about the anchors all the same: finish() moves it there.
+    // Where the linear rows (the point block's, a slider's) act, from the anchors (zero: at them). The
+    // reaction torque is reported about the anchors all the same: finish() moves it there.
     Vec3 m_pointShift = Vec3::Zero();
     // The point block's arms and mass at the frames' world points now.
     void preparePoint(const SolverBody& a, const SolverBody& b);

@@ -183,3 +183,33 @@ TEST(SliderMotor, DrivesAtItsSpeedOrGivesWayAtTheAnalyticRate) {
         slider->Delete();
     }
 }
+
+// A 1 kg, 0.2 m box on a slider 10 m out along the axis of a spinning 1 t box: it slides out along the axis
+// (nothing holds it) but stays on it within 1 mm and keeps its orientation within 5 mrad for 3 s (measured
+// 36 um and 0.5 mrad). The linear rows act at its centre of mass: at the anchor, each across row turned it by
+// a torque of 10 m times its force that the orientation rows turned back, and it strayed 0.42 m off the axis
+// and turned 42 mrad.
+TEST(SliderLongArm, StaysOnTheAxisOfASpinningBody) {
+    StepScene s(60);
+    const float L = 10;
+    iRigidBody* heavy = boxBody(Vector(0, 10, 0), 1000.0f, 1, 1, 1);
+    iRigidBody* light = boxBody(Vector(L, 10, 0), 1.0f, 0.2f, 0.2f, 0.2f);
+    iSliderJoint* slider = CreateSliderJoint(heavy, light, Vector(0, 10, 0), Vector(1, 0, 0));
+    ASSERT_NE(slider, nullptr);
+    heavy->getDynamics().angularVelocity = Vector(0.1f, 0.2f, 0.3f);
+    float offAxis = 0, turn = 0;
+    s.recorder.fn = [&] {
+        const RBDynamics &da = heavy->getDynamics(), &db = light->getDynamics();
+        const Matrix back = da.orientation.transpose();
+        const Vector local = (db.position - da.position) * back; // in the heavy box's frame: on its x axis
+        offAxis = std::max(offAxis, std::sqrt(local.y * local.y + local.z * local.z));
+        const Matrix rel = db.orientation * back; // identity at creation
+        const float trace = rel.m11 + rel.m22 + rel.m33;
+        turn = std::max(turn, std::acos(std::clamp((trace - 1) / 2, -1.0f, 1.0f)));
+    };
+    s.seconds(3);
+    EXPECT_LT(offAxis, 1e-3f);
+    EXPECT_LT(turn, 5e-3f);
+    EXPECT_GT(slider->getPosition(), 0.1f); // it did slide out
+    slider->Delete();
+}
