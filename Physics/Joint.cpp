@@ -145,7 +145,7 @@ void Joint::warmStart(SolverBody& a, SolverBody& b) {
         resetImpulses();
         return;
     }
-    if (m_usesPoint) m_point.apply(a, b, m_point.impulse);
+    if (m_usesPoint) m_point.warmStart(a, b);
     if (m_usesOrientation) m_orientation.apply(a, b, m_orientation.impulse);
     for (int i = 0; i < m_rowCount; ++i)
         if (m_rows[i].kind != RowKind::Off && m_rows[i].impulse != 0)
@@ -178,14 +178,29 @@ void Joint::solve(SolverBody& a, SolverBody& b, Real h, JointPass pass, const Jo
         m_point.solve(a, b, push ? Vec3(soft.biasRate * m_pointError) : Vec3::Zero(), push ? soft : rigid);
 }
 
+// K^-1 r = y - D^-1 u (c u . y) / q and its u-part (u . y) / q, with y = D^-1 r and q = 1 + c u . D^-1 u
+// (Sherman-Morrison; JointRows.h, PointBlock).
+void PointBlock::solveSwing(SolverBody& a, SolverBody& b, const Vec3& bias, const JointSoftness& s) {
+    const Vec3 y = mass * (speed(a, b) + swing * swingAxis.dot(b.w - a.w) + bias);
+    const Real uy = swing.dot(y);
+    const Vec3 change =
+        -s.massScale * Vec3(y - swingMass * (swingScale * uy / swingDenominator)) - s.impulseScale * impulse;
+    const Real swingChange = -s.massScale * (uy / swingDenominator) - s.impulseScale * swingImpulse;
+    apply(a, b, change, swingChange);
+    impulse += change;
+    swingImpulse += swingChange;
+}
+
 void Joint::save() {
     m_point.saved = m_point.impulse;
+    m_point.savedSwing = m_point.swingImpulse;
     m_orientation.saved = m_orientation.impulse;
     for (int i = 0; i < m_rowCount; ++i) m_rows[i].saved = m_rows[i].impulse;
 }
 
 void Joint::restore() {
     m_point.impulse = m_point.saved;
+    m_point.swingImpulse = m_point.savedSwing;
     m_orientation.impulse = m_orientation.saved;
     for (int i = 0; i < m_rowCount; ++i) m_rows[i].impulse = m_rows[i].saved;
 }
@@ -201,7 +216,9 @@ bool Joint::finish(Real h) {
         else
             angular += r.impulse * r.armB;
     }
-    angular -= m_pointShift.cross(linear); // about the anchors
+    // About the anchors (the part about a hinge's free axis was the hinge's own).
+    const Vec3 moved = m_pointShift.cross(linear);
+    angular -= m_point.swings ? Vec3(moved - m_point.swingAxis * m_point.swingAxis.dot(moved)) : moved;
     m_force = linear / h;
     m_torque = angular / h;
     if (m_broken || !(m_force.norm() > m_breakForce || m_torque.norm() > m_breakTorque)) return false;
@@ -226,6 +243,7 @@ void Joint::setState(const State& s) {
 
 void Joint::resetImpulses() {
     m_point.impulse = m_orientation.impulse = Vec3::Zero();
+    m_point.swingImpulse = 0;
     for (int i = 0; i < kMaxRows; ++i) m_rows[i].impulse = 0;
 }
 
