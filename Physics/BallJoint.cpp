@@ -117,13 +117,21 @@ private:
         const Mat3 kp =
             (a.invMass + b.invMass) * Mat3::Identity() - sA * a.invInertia * sA - sB * b.invInertia * sB;
         m_coupling = -(sB * b.invInertia + sA * a.invInertia) * u; // the point's speed per cone impulse
-        Mat4r k;
-        k.topLeftCorner<3, 3>() = kp;
-        k.topRightCorner<3, 1>() = m_coupling;
-        k.bottomLeftCorner<1, 3>() = m_coupling.transpose();
-        k(3, 3) = u.dot((a.invInertia + b.invInertia) * u);
-        m_blockOk = k.determinant() != 0;
-        if (m_blockOk) m_blockMass = k.inverse();
+        // K = [P c; c^T k] inverted through the Schur complement of P, s = k - c^T P^-1 c:
+        //   K^-1 = [P^-1 + w w^T / s, -w / s; -w^T / s, 1 / s], w = P^-1 c.
+        // (Eigen's 4x4 inverse by cofactors lost K to float rounding where a body is far from the joint
+        // against its size: a 0.4 m box 50 m out took non-finite steps.)
+        m_blockOk = kp.determinant() != 0;
+        if (!m_blockOk) return;
+        const Mat3 pInv = kp.inverse();
+        const Vec3 w = pInv * m_coupling;
+        const Real schur = u.dot((a.invInertia + b.invInertia) * u) - m_coupling.dot(w);
+        m_blockOk = schur > 0 && std::isfinite(schur);
+        if (!m_blockOk) return;
+        m_blockMass.topLeftCorner<3, 3>() = pInv + w * w.transpose() / schur;
+        m_blockMass.topRightCorner<3, 1>() = -w / schur;
+        m_blockMass.bottomLeftCorner<1, 3>() = -w.transpose() / schur;
+        m_blockMass(3, 3) = 1 / schur;
     }
 
     void solvePointAndCone(SolverBody& a, SolverBody& b, Real bias) {

@@ -25,7 +25,7 @@ public:
         m_rotationError = rotationError(basisA, basisB);
         // The point rows act at the lighter body's centre of mass, not at the anchor: the same constraint
         // (with the orientation rows), but that body's rows no longer turn it. At the anchor, a small body
-        // welded far from it took two torques of about L times the force that all but cancelled: a 2 cm box
+        // welded far from it took two torques of about L times the force that all but cancelled: a 4 cm box
         // welded 100 m from a heavy one flew apart. The target of that point: where B's frame, put back on
         // A's, would carry it (the anchors' offset plus the point's turn by the rotation error).
         m_pointShift = b.invMass >= a.invMass ? m_point.rB : m_point.rA;
@@ -78,7 +78,7 @@ private:
         const Mat3 cr = c * rInv; // C R^-1 (and its transpose R^-1 C^T: R is symmetric)
         // S = P - C R^-1 C^T is formed directly, not by the subtraction: with IA^-1 = a, IB^-1 = b it is
         // (1/mA + 1/mB) 1 + [d]x Q [d]x^T, Q = a (a + b)^-1 b = (IA + IB)^-1, d = rA - rB. Subtracted, P's
-        // L^2 I^-1 terms cancel: a 2 cm box welded 100 m from its anchor lost S to rounding (zero; the weld
+        // L^2 I^-1 terms cancel: a 4 cm box welded 100 m from its anchor lost S to rounding (zero; the weld
         // did nothing), where S is 1/m.
         const Mat3 q = a.invInertia * rInv * b.invInertia, d = cross(arm);
         const Mat3 s =

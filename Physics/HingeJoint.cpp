@@ -92,7 +92,7 @@ public:
         }
         // The point acts at the lighter body's centre of mass, as the weld's and slider's do, with that
         // body's turn about the axis (the swing) in its rows: the turn across the axis is then the angular
-        // rows' alone and no longer fought over (a 0.2 m box hinged 10 m out from a spinning 1 t box tilted
+        // rows' alone and no longer fought over (a 0.4 m box hinged 10 m out from a spinning 1 t box tilted
         // its axis 23 mrad and left its place by 0.23 m). Its target: the anchors' offset, less what the
         // axes' misalignment moves it by.
         const Vec3 pA = worldPoint(a, m_frameA), pB = worldPoint(b, m_frameB);

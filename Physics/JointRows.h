@@ -132,9 +132,10 @@ inline void makeMotor(JointRow& r, Real speed, Real maxImpulse) {
 // Cdot gains u (axis . (wB - wA)), u = axis x (the anchor from that centre), the point's motion as the body
 // turns about the free axis; its turn across the axis is then the hinge's angular rows' alone. K is then
 // D + c u u^T (c = axis . I^-1 axis of the light body) with D the rest, and a small body far out makes c
-// |u|^2 many orders above D: K^-1 is applied as D^-1 less its rank-one part (Sherman-Morrison), and the
-// impulse's u-part, the one that turns the light body, is kept apart (swingImpulse) and worked out in closed
-// form, as float cannot resolve it from the impulse (a 2 cm box hinged 20 m out from a 1 t one flew off).
+// |u|^2 many orders above D: K^-1 is applied as D^-1 less its rank-one part (Sherman-Morrison), and each
+// solve's u-part, the one that turns the light body, is worked out in closed form and kept apart within the
+// sub-step (swingImpulse), as float cannot resolve it from the impulse (a 4 cm box hinged 20 m out from a
+// 1 t one flew off). Each prepare takes it anew from the impulse, along the u of the new poses.
 struct PointBlock {
     Vec3 rA = Vec3::Zero(), rB = Vec3::Zero();
     Mat3 mass = Mat3::Zero(); // K^-1; with a swing, D^-1
@@ -144,7 +145,7 @@ struct PointBlock {
     Real swingScale = 0, swingDenominator = 1;                                     // c, 1 + c u . D^-1 u
     Real swingImpulse = 0, savedSwing = 0;                                         // u . impulse
     // c |u|^2 against D along u: above about 10^7 float no longer resolves the light body's turn (measured:
-    // a 0.1 kg, 2 cm box hinged 70 m out from a spinning 1 t box, 1.8 10^7, strayed 9 mm; at 100 m it flew).
+    // a 0.1 kg, 4 cm box hinged 70 m out from a spinning 1 t box, 1.8 10^7, strayed 9 mm; at 100 m it flew).
     Real swingCondition = 0;
 
     void setArms(const SolverBody& a, const SolverBody& b, const Vec3& armA, const Vec3& armB) {

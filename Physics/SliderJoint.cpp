@@ -72,7 +72,7 @@ public:
         const Quat qB = worldBasis(b, m_frameB);
         // The linear rows act at the lighter body's centre of mass, as the weld's do (FixedJoint.cpp): with
         // the orientation held, the same constraint, but that body's linear rows no longer turn it against
-        // its orientation rows (a 0.2 m box on a 10 m slider from a spinning 1 t box strayed 0.4 m off the
+        // its orientation rows (a 0.4 m box on a 10 m slider from a spinning 1 t box strayed 0.4 m off the
         // axis). d is B's anchor from A's, moved with the point.
         Vec3 rA = pB - a.com, rB = pB - b.com;
         m_pointShift = b.invMass >= a.invMass ? rB : rA;

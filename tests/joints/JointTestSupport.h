@@ -40,6 +40,17 @@ inline iRigidBody* boxBody(const Vector& p, float m, float hx, float hy, float h
     return b;
 }
 
+// The far-out joint cases: a 1 t box (2 m across) at (0, 10, 0) spinning at (0.1, 0.2, 0.3) rad/s, and a box
+// of mass m and half extent `half` L out along x, at rest.
+struct FarOutPair {
+    iRigidBody *heavy, *light;
+};
+inline FarOutPair spinningPairFarOut(float L, float m, float half) {
+    FarOutPair p{boxBody(Vector(0, 10, 0), 1000.0f, 1, 1, 1), boxBody(Vector(L, 10, 0), m, half, half, half)};
+    p.heavy->getDynamics().angularVelocity = Vector(0.1f, 0.2f, 0.3f);
+    return p;
+}
+
 // The mean period of a signal sampled every dt, from its upward zero crossings (linearly interpolated).
 inline double meanPeriod(const std::vector<double>& x, double dt) {
     std::vector<double> ups;
