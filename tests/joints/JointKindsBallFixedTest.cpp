@@ -60,7 +60,8 @@ TEST(BallCone, HoldsFiftyMetresOutFromASpinningBody) {
     ErrorRecorder errors;
     StepScene s(60);
     const float L = 50;
-    const auto [heavy, light] = spinningPairFarOut(L, 1.0f, 0.2f);
+    const FarOutPair pair = spinningPairFarOut(L, 1.0f, 0.2f);
+    iRigidBody *heavy = pair.heavy, *light = pair.light;
     iBallJoint* joint = CreateBallJoint(heavy, light, Vector(0, 10, 0), Vector(1, 0, 0));
     ASSERT_NE(joint, nullptr);
     ASSERT_TRUE(joint->setConeLimit(0.3f));
@@ -286,7 +287,8 @@ TEST(FixedPair, HoldsAtAMassRatioOfTenThousandOnALongArm) {
 TEST(FixedPair, HoldsASmallBoxOneHundredMetresOutOnASpinningOne) {
     StepScene s(60);
     const float L = 100;
-    const auto [heavy, small] = spinningPairFarOut(L, 0.1f, 0.02f);
+    const FarOutPair pair = spinningPairFarOut(L, 0.1f, 0.02f);
+    iRigidBody *heavy = pair.heavy, *small = pair.light;
     iFixedJoint* weld = CreateFixedJoint(heavy, small, Vector(0, 10, 0));
     ASSERT_NE(weld, nullptr);
     WeldDrift drift{heavy, small, Vector(L, 0, 0)};

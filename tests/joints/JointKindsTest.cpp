@@ -194,7 +194,8 @@ struct HingedFarOut {
 };
 HingedFarOut hingeFarOut(float m, float half, float L) {
     StepScene s(60);
-    const auto [heavy, light] = spinningPairFarOut(L, m, half);
+    const FarOutPair pair = spinningPairFarOut(L, m, half);
+    iRigidBody *heavy = pair.heavy, *light = pair.light;
     iHingeJoint* hinge = CreateHingeJoint(heavy, light, Vector(0, 10, 0), Vector(0, 0, 1));
     EXPECT_NE(hinge, nullptr);
     HingedFarOut out;
@@ -247,7 +248,8 @@ TEST(HingeLongArm, BeyondFloatItSaysSoOnce) {
 TEST(SliderLongArm, StaysOnTheAxisOfASpinningBody) {
     StepScene s(60);
     const float L = 10;
-    const auto [heavy, light] = spinningPairFarOut(L, 1.0f, 0.2f);
+    const FarOutPair pair = spinningPairFarOut(L, 1.0f, 0.2f);
+    iRigidBody *heavy = pair.heavy, *light = pair.light;
     iSliderJoint* slider = CreateSliderJoint(heavy, light, Vector(0, 10, 0), Vector(1, 0, 0));
     ASSERT_NE(slider, nullptr);
     float offAxis = 0, turn = 0;
