@@ -1,11 +1,10 @@
 // HingeJoint.cpp - B turns relative to A about the hinge axis only (iHingeJoint.h).
 //
 // Rows (JointRows.h): the anchors together (point block, C = pB - pA, acting at the lighter body's centre of
-// mass: prepare); the axes aligned, two angular rows
-// across A's axis (C_i = (aA x aB) . p_i, Cdot_i = (wB - wA) . p_i); the limits, one-sided rows on the angle
-// theta (the twist of B's frame in A's, Cdot = (wB - wA) . aA); the motor, Cdot = speed with |lambda| <=
-// maxTorque h. Solved motor and limits first, the point last (what matters most ends the sweep exact).
-// This file prepares the rows; Joint::solve solves them.
+// mass: prepare); the axes aligned, two angular rows across A's axis (C_i = (aA x aB) . p_i, Cdot_i =
+// (wB - wA) . p_i); the limits, one-sided rows on the angle theta (the twist of B's frame in A's, Cdot =
+// (wB - wA) . aA); the motor, Cdot = speed with |lambda| <= maxTorque h. Solved motor and limits first, the
+// point last (what matters most ends the sweep exact). This file prepares the rows; Joint::solve solves them.
 #include "Joint.h"
 
 #include "RigidBody.h"
