@@ -20,7 +20,7 @@ public:
     }
 
     void prepare(const SolverBody& a, const SolverBody& b, Real) override {
-        preparePoint(a, b);
+        const Vec3 pA = worldPoint(a, m_frameA), pB = worldPoint(b, m_frameB);
         const Quat basisA = worldBasis(a, m_frameA), basisB = worldBasis(b, m_frameB);
         m_rotationError = rotationError(basisA, basisB);
         // The point rows act at the lighter body's centre of mass, not at the anchor: the same constraint
@@ -28,10 +28,11 @@ public:
         // welded far from it took two torques of about L times the force that all but cancelled: a 4 cm box
         // welded 100 m from a heavy one flew apart. The target of that point: where B's frame, put back on
         // A's, would carry it (the anchors' offset plus the point's turn by the rotation error).
-        m_pointShift = b.invMass >= a.invMass ? m_point.rB : m_point.rA;
-        m_point.rA -= m_pointShift;
-        m_point.rB -= m_pointShift;
-        m_pointError += (basisA * basisB.conjugate()) * m_pointShift - m_pointShift;
+        // (The point block's own 3x3 mass is not used: the weld solves its six rows as one block.)
+        m_pointShift = bIsLighter(a, b) ? Vec3(pB - b.com) : Vec3(pA - a.com);
+        m_point.rA = pA - a.com - m_pointShift;
+        m_point.rB = pB - b.com - m_pointShift;
+        m_pointError = Vec3(pB - pA) + Vec3((basisA * basisB.conjugate()) * m_pointShift - m_pointShift);
         // K = [P C; C^T R]: the point block, the coupling and the orientation block.
         const Mat3 sA = cross(m_point.rA), sB = cross(m_point.rB);
         const Mat3 c = -(sA * a.invInertia + sB * b.invInertia);

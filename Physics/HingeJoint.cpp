@@ -95,7 +95,7 @@ public:
         // its axis 23 mrad and left its place by 0.23 m). Its target: the anchors' offset, less what the
         // axes' misalignment moves it by.
         const Vec3 pA = worldPoint(a, m_frameA), pB = worldPoint(b, m_frameB);
-        const bool lightIsB = b.invMass >= a.invMass;
+        const bool lightIsB = bIsLighter(a, b);
         m_pointShift = lightIsB ? Vec3(pB - b.com) : Vec3(pA - a.com);
         m_point.setSwingArms(a, b, lightIsB,
                              lightIsB ? Vec3(pA - a.com - m_pointShift) : Vec3(pB - b.com - m_pointShift),

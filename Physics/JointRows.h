@@ -126,6 +126,11 @@ inline void makeMotor(JointRow& r, Real speed, Real maxImpulse) {
     r.upper = maxImpulse;
 }
 
+// Where a joint's linear rows act when they act at a centre of mass (the weld, the slider, the hinge's
+// point): the lighter body's (B's on a tie), so that a small body far out is not turned by its own linear
+// rows.
+inline bool bIsLighter(const SolverBody& a, const SolverBody& b) { return b.invMass >= a.invMass; }
+
 // The anchors pB and pA together: C = pB - pA, Cdot = vB + wB x rB - vA - wA x rA.
 //
 // A hinge's point acts at the lighter body's centre of mass instead (setSwingArms: that body's arm is zero):

@@ -75,7 +75,7 @@ public:
         // its orientation rows (a 0.4 m box on a 10 m slider from a spinning 1 t box strayed 0.4 m off the
         // axis). d is B's anchor from A's, moved with the point.
         Vec3 rA = pB - a.com, rB = pB - b.com;
-        m_pointShift = b.invMass >= a.invMass ? rB : rA;
+        m_pointShift = bIsLighter(a, b) ? rB : rA;
         rA -= m_pointShift;
         rB -= m_pointShift;
         const Vec3 d = pB - pA + (qA * qB.conjugate()) * m_pointShift - m_pointShift;

@@ -225,21 +225,26 @@ TEST(FixedCantilever, HoldsASmallBoxOneHundredMetresOut) {
 
 namespace {
 
-// How far a welded body strays from its place in the other's frame (welded at offset `local` there, with no
-// turn between them): the worst offset and the worst turn over the steps recorded.
+// a and b (b at offset `local` in a's frame, no turn between them) welded at anchor and stepped 3 s: how far
+// b strayed from its place in a's frame, the worst offset and the worst turn.
 struct WeldDrift {
-    iRigidBody *a, *b;
-    Vector local;
     float offset = 0, turn = 0;
-    void record() {
-        const RBDynamics &da = a->getDynamics(), &db = b->getDynamics();
-        const Matrix back = da.orientation.transpose();
-        offset = std::max(offset, ((db.position - da.position) * back - local).length());
-        const Matrix rel = db.orientation * back; // identity at creation
-        const float trace = rel.m11 + rel.m22 + rel.m33;
-        turn = std::max(turn, std::acos(std::clamp((trace - 1) / 2, -1.0f, 1.0f)));
-    }
 };
+WeldDrift weldAndRun(StepScene& s, iRigidBody* a, iRigidBody* b, const Vector& anchor, const Vector& local) {
+    WeldDrift drift;
+    iFixedJoint* weld = CreateFixedJoint(a, b, anchor);
+    EXPECT_NE(weld, nullptr);
+    if (!weld) return drift;
+    s.recorder.fn = [&] {
+        const RBDynamics &da = a->getDynamics(), &db = b->getDynamics();
+        drift.offset = std::max(drift.offset,
+                                ((db.position - da.position) * da.orientation.transpose() - local).length());
+        drift.turn = std::max(drift.turn, relativeTurn(da, db));
+    };
+    s.seconds(3);
+    weld->Delete();
+    return drift;
+}
 
 } // namespace
 
@@ -249,16 +254,11 @@ TEST(FixedPair, FallsAndTumblesAsOneBody) {
     StepScene s(60);
     iRigidBody* a = boxBody(Vector(0, 10, 0), 1.0f, 0.3f, 0.1f, 0.1f);
     iRigidBody* b = boxBody(Vector(0.6f, 10, 0), 2.0f, 0.3f, 0.1f, 0.1f);
-    iFixedJoint* weld = CreateFixedJoint(a, b, Vector(0.3f, 10, 0));
-    ASSERT_NE(weld, nullptr);
     a->getDynamics().angularVelocity = Vector(1, 2, 3);
-    WeldDrift drift{a, b, Vector(0.6f, 0, 0)};
-    s.recorder.fn = [&] { drift.record(); };
-    s.seconds(3);
+    const WeldDrift drift = weldAndRun(s, a, b, Vector(0.3f, 10, 0), Vector(0.6f, 0, 0));
     EXPECT_LT(drift.offset, 1e-3f);
     EXPECT_LT(drift.turn, 0.01f);
     EXPECT_GT(a->getDynamics().angularVelocity.length(), 0.3f); // it did tumble
-    weld->Delete();
 }
 
 // The weld's six rows are solved as one block whatever the masses: a 1 kg box welded 3 m out from a spinning
@@ -268,16 +268,11 @@ TEST(FixedPair, HoldsAtAMassRatioOfTenThousandOnALongArm) {
     StepScene s(60);
     iRigidBody* heavy = boxBody(Vector(0, 10, 0), 10000.0f, 0.3f, 0.1f, 0.1f);
     iRigidBody* light = boxBody(Vector(3, 10, 0), 1.0f, 0.1f, 0.1f, 0.1f);
-    iFixedJoint* weld = CreateFixedJoint(heavy, light, Vector(0.3f, 10, 0));
-    ASSERT_NE(weld, nullptr);
     heavy->getDynamics().angularVelocity = Vector(1, 2, 3);
-    WeldDrift drift{heavy, light, Vector(3, 0, 0)};
-    s.recorder.fn = [&] { drift.record(); };
-    s.seconds(3);
+    const WeldDrift drift = weldAndRun(s, heavy, light, Vector(0.3f, 10, 0), Vector(3, 0, 0));
     EXPECT_LT(drift.offset, 2e-3f);
     EXPECT_LT(drift.turn, 5e-3f);
     EXPECT_GT(heavy->getDynamics().angularVelocity.length(), 1.0f); // it did spin
-    weld->Delete();
 }
 
 // A 4 cm, 0.1 kg box welded 100 m out from a spinning 1 t, 2 m box keeps its place within 1 mm and 5 mrad
@@ -288,16 +283,10 @@ TEST(FixedPair, HoldsASmallBoxOneHundredMetresOutOnASpinningOne) {
     StepScene s(60);
     const float L = 100;
     const FarOutPair pair = spinningPairFarOut(L, 0.1f, 0.02f);
-    iRigidBody *heavy = pair.heavy, *small = pair.light;
-    iFixedJoint* weld = CreateFixedJoint(heavy, small, Vector(0, 10, 0));
-    ASSERT_NE(weld, nullptr);
-    WeldDrift drift{heavy, small, Vector(L, 0, 0)};
-    s.recorder.fn = [&] { drift.record(); };
-    s.seconds(3);
+    const WeldDrift drift = weldAndRun(s, pair.heavy, pair.light, Vector(0, 10, 0), Vector(L, 0, 0));
     EXPECT_LT(drift.offset, 1e-3f);
     EXPECT_LT(drift.turn, 5e-3f);
-    EXPECT_GT(heavy->getDynamics().angularVelocity.length(), 0.1f); // it did spin
-    weld->Delete();
+    EXPECT_GT(pair.heavy->getDynamics().angularVelocity.length(), 0.1f); // it did spin
 }
 
 // A 3 kg ball hanging still on a 1 m rod: the rod's tension is m g within 1 %.

@@ -255,12 +255,10 @@ TEST(SliderLongArm, StaysOnTheAxisOfASpinningBody) {
     float offAxis = 0, turn = 0;
     s.recorder.fn = [&] {
         const RBDynamics &da = heavy->getDynamics(), &db = light->getDynamics();
-        const Matrix back = da.orientation.transpose();
-        const Vector local = (db.position - da.position) * back; // in the heavy box's frame: on its x axis
+        // in the heavy box's frame: on its x axis
+        const Vector local = (db.position - da.position) * da.orientation.transpose();
         offAxis = std::max(offAxis, std::sqrt(local.y * local.y + local.z * local.z));
-        const Matrix rel = db.orientation * back; // identity at creation
-        const float trace = rel.m11 + rel.m22 + rel.m33;
-        turn = std::max(turn, std::acos(std::clamp((trace - 1) / 2, -1.0f, 1.0f)));
+        turn = std::max(turn, relativeTurn(da, db));
     };
     s.seconds(3);
     EXPECT_LT(offAxis, 1e-3f);

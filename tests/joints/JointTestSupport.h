@@ -4,6 +4,7 @@
 
 #include "../physics/PhysicsTestSupport.h"
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -38,6 +39,14 @@ inline iRigidBody* boxBody(const Vector& p, float m, float hx, float hy, float h
     inertia.m33 = m * (hx * hx + hy * hy) / 3;
     d.setInertiaTensor(inertia);
     return b;
+}
+
+// The angle of b's rotation relative to a's (radians): zero while b keeps the turn it had against a when
+// both were at the identity.
+inline float relativeTurn(const RBDynamics& a, const RBDynamics& b) {
+    const Matrix rel = b.orientation * a.orientation.transpose();
+    const float trace = rel.m11 + rel.m22 + rel.m33;
+    return std::acos(std::clamp((trace - 1) / 2, -1.0f, 1.0f));
 }
 
 // The far-out joint cases: a 1 t box (2 m across) at (0, 10, 0) spinning at (0.1, 0.2, 0.3) rad/s, and a box
