@@ -136,6 +136,7 @@ void ContactSolver::solve(Real dt, const SolverBodyAccess& access) {
     prepare(dt, h);
     orderByLevel();
     splitForces();
+    tetherJoints(); // a chain hung from an immovable body: its far bodies tethered to where it starts
     prepareJoints(h);
     // Through the sub-steps the velocities live in the blocks' flat array; joints and shock propagation (when
     // there are any) work on the bodies, which get them for that and give them back.
@@ -164,6 +165,7 @@ void ContactSolver::solve(Real dt, const SolverBodyAccess& access) {
         solveContacts(h, ContactBlocks::Pass::Relax, true); // the velocities again, at the new poses
     }
     m_blocks.storeVelocities(m_bodies);
+    carryTethers(); // the joints on a tether's way report its pull as theirs
     m_blocks.unpack(m_manifolds);
     findBounces();
     projectDeepOverlaps();

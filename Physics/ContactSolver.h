@@ -20,13 +20,15 @@
 // give, load / (effective mass * (2 pi f)^2): 1.2 mm under nine boxes at 4 sub-steps (f = 60 Hz).
 // A sub-step solves 11 rows a point (5 + 2 + 4) and sub-steps are the accuracy knob.
 // Joints (Joint.h, JointStage.cpp) are solved in the same sub-steps, before the contacts in each pass: rigid
-// rows in the velocity and relax passes, their drift corrected in the push out (forgotten with it).
+// rows in the velocity and relax passes, their drift corrected in the push out (forgotten with it); a heavy
+// body down a chain hung from an immovable one is tethered to the chain's start (JointTethers.cpp).
 // References: Catto, "Iterative Dynamics with Temporal Coherence" (GDC 2005), "Solver2D" (2024) and
 // "Soft Step" (Box2D v3); Bullet's persistent manifold (contact breaking threshold).
 #pragma once
 
 #include "ContactBlocks.h"
 #include "FlatMap.h"
+#include "JointRows.h"
 #include "MathBridge.h"
 #include "SolverData.h"
 #include "iContactSettings.h"
@@ -181,6 +183,11 @@ private:
     void solveJoints(Real h, JointPass pass);
     void saveJoints();
     void restoreJoints();
+    // JointTethers.cpp
+    void tetherJoints();
+    void prepareTethers(Real h);
+    void solveTethers(Real h, JointPass pass, const JointSoftness& soft);
+    void carryTethers() const;
     // ContactSolver.cpp
     void applySwitches();
     void prepare(Real dt, Real h);
@@ -215,6 +222,31 @@ private:
     Real m_h = 0;                                 // its sub-step
     std::vector<Joint*> m_joints, m_solvedJoints; // set for the step; entered (both bodies not resting)
     std::vector<std::pair<const RBDynamics*, const RBDynamics*>> m_noContact; // joined roots, sorted
+    // Tethers (JointTethers.cpp): a body two joints or more down a chain from an immovable body, kept within
+    // the chain's length of where the chain starts on it (from the two nearest chain starts at most).
+    static constexpr int kTethersPerBody = 2;
+    static constexpr Real kTetherRatio = 4; // a body this many times the lightest above it is tethered
+    struct Tether {
+        int root, body;  // solver slots
+        Vec3 start, end; // where the chain starts on the root and holds the body (root frames)
+        Real length;     // the most the chain allows between the two
+        int reach;       // the body's reach (m_reach) this tether follows back up the chain
+        JointRow row;    // pulls the body toward start, at length
+    };
+    // How a chain from an immovable body reached a body (kTethersPerBody a body). Points in root frames.
+    struct Reach {
+        int chain = -1;            // the chain's first joint (m_solvedJoints): -1, not reached
+        int root = -1, via = -1;   // the immovable body; the joint from the parent
+        int parent = -1;           // the parent's reach, -1 at the root
+        int depth = 0;             // joints from the root
+        Vec3 start = Vec3::Zero(); // the chain's start on its root
+        Vec3 entry = Vec3::Zero(); // where the joint from the parent holds it
+        Real length = 0;           // the most the chain allows between start and entry
+        Real lightest = 0;         // the largest inverse mass on the chain down to it (it included)
+    };
+    std::vector<Tether> m_tethers;
+    std::vector<Reach> m_reach; // kTethersPerBody per solver body
+    std::vector<int> m_jointStart, m_jointList, m_jointCursor, m_reachQueue;
     static constexpr int kProjectionIterations = 4;
     static constexpr int kRestitutionSweeps = 8;
     std::vector<std::pair<size_t, int>> m_bouncing; // (manifold, point) of the points that bounce this step

@@ -35,6 +35,7 @@ public:
     float getMinLength() const override { return float(m_min); }
     float getMaxLength() const override { return float(m_max); }
     float getLength() const override { return float(anchorDistance()); }
+    Real reach() const override { return m_max; }
 
     void prepare(const SolverBody& a, const SolverBody& b, Real) override {
         const Vec3 pA = worldPoint(a, m_frameA), pB = worldPoint(b, m_frameB);

@@ -128,6 +128,7 @@ Real Joint::anchorDistance() const {
 void Joint::enter(int a, int b) {
     slotA = a;
     slotB = b;
+    m_carried = Vec3::Zero();
     m_frameA = rootFrame(m_a, m_localA);
     m_frameB = rootFrame(m_b, m_localB);
 }
@@ -205,6 +206,11 @@ void Joint::restore() {
     for (int i = 0; i < m_rowCount; ++i) m_rows[i].impulse = m_rows[i].saved;
 }
 
+Real Joint::reach() const {
+    const bool together = m_type == JOINT_Ball || m_type == JOINT_Hinge || m_type == JOINT_Fixed;
+    return together ? Real(0) : std::numeric_limits<Real>::infinity();
+}
+
 bool Joint::finish(Real h) {
     Vec3 linear = m_usesPoint ? m_point.impulse : Vec3::Zero();
     Vec3 angular = m_usesOrientation ? m_orientation.impulse : Vec3::Zero();
@@ -219,7 +225,7 @@ bool Joint::finish(Real h) {
     // About the anchors (the part about a hinge's free axis was the hinge's own).
     const Vec3 moved = m_pointShift.cross(linear);
     angular -= m_point.swings ? Vec3(moved - m_point.swingAxis * m_point.swingAxis.dot(moved)) : moved;
-    m_force = linear / h;
+    m_force = (linear + m_carried) / h; // (a tether's pull runs through the anchors: no torque about them)
     m_torque = angular / h;
     if (m_broken || !(m_force.norm() > m_breakForce || m_torque.norm() > m_breakTorque)) return false;
     m_broken = true;

@@ -57,6 +57,16 @@ public:
     virtual void solve(SolverBody& a, SolverBody& b, Real h, JointPass pass, const JointSoftness& soft);
     void save();
     void restore();
+    // The most the two anchors can be apart while the joint holds: 0 when it keeps them together (ball,
+    // hinge, fixed), a distance joint's maximum, infinite when they may slide or stretch apart (slider,
+    // spring). What a tether adds up along a chain (JointTethers.cpp).
+    virtual Real reach() const;
+    // This step's frames, in the solver bodies' root frames.
+    const JointFrame& frameA() const { return m_frameA; }
+    const JointFrame& frameB() const { return m_frameB; }
+    // An impulse on its bodies that a tether took over from it this sub-step (+ on b, - on a): its reaction,
+    // and what breaks it, include it.
+    void carry(const Vec3& impulse) { m_carried += impulse; }
     // After the step: the reaction of the last sub-step of length h; true when it broke now.
     bool finish(Real h);
     // What the next step reads of the last (snapshots): the impulses it warm-starts from, whether it broke.
@@ -121,6 +131,7 @@ private:
     float m_breakForce = std::numeric_limits<float>::infinity();
     float m_breakTorque = std::numeric_limits<float>::infinity();
     Vec3 m_force = Vec3::Zero(), m_torque = Vec3::Zero();
+    Vec3 m_carried = Vec3::Zero();
 };
 
 // The iJoint methods every kind shares, forwarded to Joint.

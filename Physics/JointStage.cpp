@@ -1,5 +1,6 @@
 // JointStage.cpp - the joints' part of the contact solve: their bodies entering, contacts between joined
-// bodies dropped, and the joints' rows in each pass of each sub-step beside the contacts' (Joint.h).
+// bodies dropped, and the joints' rows (and their tethers', JointTethers.cpp) in each pass of each sub-step
+// beside the contacts' (Joint.h).
 #include "ContactSolver.h"
 #include "Joint.h"
 
@@ -46,10 +47,14 @@ void ContactSolver::enterJoints(const SolverBodyAccess& access) {
 
 void ContactSolver::prepareJoints(Real h) {
     for (Joint* j : m_solvedJoints) j->prepare(m_bodies[size_t(j->slotA)], m_bodies[size_t(j->slotB)], h);
+    prepareTethers(h);
 }
 
 void ContactSolver::warmStartJoints() {
     for (Joint* j : m_solvedJoints) j->warmStart(m_bodies[size_t(j->slotA)], m_bodies[size_t(j->slotB)]);
+    for (Tether& t : m_tethers)
+        if (t.row.kind != RowKind::Off && t.row.impulse != 0)
+            t.row.apply(m_bodies[size_t(t.root)], m_bodies[size_t(t.body)], t.row.impulse);
 }
 
 // The push out corrects drift at biasRate C, rigidly (massScale 1, impulseScale 0): a soft push, as the
@@ -59,17 +64,21 @@ void ContactSolver::warmStartJoints() {
 void ContactSolver::solveJoints(Real h, JointPass pass) {
     const JointSoftness soft{m_jointSoft.biasRate, 1, 0};
     const int sweeps = pass == JointPass::PushOut ? 1 : std::max(1, m_settings.jointIterations);
-    for (int k = 0; k < sweeps; ++k)
+    for (int k = 0; k < sweeps; ++k) {
         for (Joint* j : m_solvedJoints)
             j->solve(m_bodies[size_t(j->slotA)], m_bodies[size_t(j->slotB)], h, pass, soft);
+        solveTethers(h, pass, soft); // last: a chain pulled straight ends holding its load
+    }
 }
 
 void ContactSolver::saveJoints() {
     for (Joint* j : m_solvedJoints) j->save();
+    for (Tether& t : m_tethers) t.row.saved = t.row.impulse;
 }
 
 void ContactSolver::restoreJoints() {
     for (Joint* j : m_solvedJoints) j->restore();
+    for (Tether& t : m_tethers) t.row.impulse = t.row.saved;
 }
 
 } // namespace physics

@@ -8,6 +8,7 @@ set(GUARDIAN_PHYSICS_SOURCES
   HingeJoint.cpp
   Joint.cpp
   JointStage.cpp
+  JointTethers.cpp
   SceneJoints.cpp
   SliderJoint.cpp
   SpringJoint.cpp

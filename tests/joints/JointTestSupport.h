@@ -41,6 +41,20 @@ inline iRigidBody* boxBody(const Vector& p, float m, float hx, float hy, float h
     return b;
 }
 
+// A chain of `links` 0.5 kg boxes (half extents thick, half, thick) hanging down -y from the world origin,
+// each joined at its top end to the one above (nullptr: the world) by join(body, above, anchor).
+template <class Join> std::vector<iRigidBody*> hangChain(int links, float half, float thick, Join join) {
+    std::vector<iRigidBody*> bodies;
+    iRigidBody* above = nullptr;
+    for (int i = 0; i < links; ++i) {
+        iRigidBody* b = boxBody(Vector(0, -half - 2 * half * i, 0), 0.5f, thick, half, thick);
+        join(b, above, Vector(0, -2 * half * i, 0));
+        bodies.push_back(b);
+        above = b;
+    }
+    return bodies;
+}
+
 // The angle of b's rotation relative to a's (radians): zero while b keeps the turn it had against a when
 // both were at the identity.
 inline float relativeTurn(const RBDynamics& a, const RBDynamics& b) {

@@ -1,0 +1,174 @@
+// JointTethers.cpp - tethers: a chain hung from an immovable body holds a heavy load at the end of light
+// links.
+//
+// Sequential impulses pass a load down a chain one joint at a time, and a joint between a heavy body and a
+// light one converges at about the rate of their mass ratio: a 500 kg ball on ten 0.5 kg ball-jointed links
+// stretched them 36 % at 4 sub-steps and, swung, fell off them. A chain whose joints keep their anchors
+// within a reach (ball, hinge and fixed joints: together; a distance joint: within its maximum) can never
+// hold a body further from where it starts on an immovable body (the world, a fixed, kinematic or sleeping
+// body) than the sum of those reaches and of the distances between each link's two anchors. A tether is that
+// bound as one more one-sided row, from the chain's start straight to the body (a distance joint's upper
+// limit): it does nothing while the chain is slack or bent, and when the chain is pulled straight it holds
+// the body in one row, whatever the mass ratio, as the chain would. It only ever asks what the joints already
+// imply (the long-range attachments of Kim, Chentanez and Mueller, "Long Range Attachments", 2012, for
+// cloth). The joints on the way carry the tether's impulse in their reactions (Joint::carry): what they
+// report, and what breaks them, is what they would have carried without it.
+//
+// Each step a breadth-first search from every chain start (a joint from an immovable body to a movable one)
+// along the solved joints gives each body the first two chains that reach it (a bridge pinned at both ends:
+// one from each pin). A body two joints or more down a chain that is more than kTetherRatio (4) times heavier
+// than the lightest body above it on that chain gets a tether: a chain of like links converges well without
+// (and pays only for a scan of its masses), a heavy load is what it cannot hold. Sliders and springs let
+// their anchors part: a chain ends at one. A tether too slack to come taut within a sub-step is off for it.
+#include "ContactSolver.h"
+#include "Joint.h"
+#include "SolverRows.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace physics {
+
+void ContactSolver::tetherJoints() {
+    m_tethers.clear();
+    const size_t bodies = m_bodies.size();
+    if (m_solvedJoints.size() < 2 || bodies == 0) return;
+    // No body on a chain kTetherRatio times heavier than another on one (chains of like links): no tether.
+    Real most = 0, least = std::numeric_limits<Real>::infinity(); // inverse masses
+    for (const Joint* j : m_solvedJoints)
+        for (int slot : {j->slotA, j->slotB}) {
+            const Real inverse = m_bodies[size_t(slot)].invMass;
+            if (inverse <= 0) continue; // immovable: a root
+            most = std::max(most, inverse);
+            least = std::min(least, inverse);
+        }
+    if (!(kTetherRatio * least < most)) return;
+    // Each body's joints that keep a reach, listed per body (offsets in m_jointStart).
+    m_jointStart.assign(bodies + 1, 0);
+    for (const Joint* j : m_solvedJoints)
+        if (std::isfinite(j->reach())) {
+            ++m_jointStart[size_t(j->slotA) + 1];
+            ++m_jointStart[size_t(j->slotB) + 1];
+        }
+    for (size_t i = 0; i < bodies; ++i) m_jointStart[i + 1] += m_jointStart[i];
+    m_jointList.resize(size_t(m_jointStart[bodies]));
+    m_jointCursor.assign(m_jointStart.begin(), m_jointStart.end() - 1);
+    for (size_t k = 0; k < m_solvedJoints.size(); ++k) {
+        const Joint* j = m_solvedJoints[k];
+        if (!std::isfinite(j->reach())) continue;
+        m_jointList[size_t(m_jointCursor[size_t(j->slotA)]++)] = int(k);
+        m_jointList[size_t(m_jointCursor[size_t(j->slotB)]++)] = int(k);
+    }
+    // Breadth first from every chain start (a joint from an immovable body to a movable one): each body keeps
+    // the first kTethersPerBody chains that reach it, no chain twice (a bridge pinned at both ends: both).
+    constexpr int K = kTethersPerBody;
+    m_reach.assign(bodies * K, Reach{});
+    m_reachQueue.clear();
+    // r reaches v, which is heavy when kTetherRatio times heavier than the lightest body above it.
+    auto label = [&](int v, Reach r) {
+        const Real inverse = m_bodies[size_t(v)].invMass;
+        const bool heavy = kTetherRatio * inverse < r.lightest;
+        r.lightest = std::max(r.lightest, inverse);
+        Reach* slot = &m_reach[size_t(v) * K];
+        for (int k = 0; k < K; ++k) {
+            if (slot[k].chain == r.chain) return; // reached by this chain already
+            if (slot[k].chain >= 0) continue;
+            slot[k] = r;
+            const int at = v * K + k;
+            m_reachQueue.push_back(at);
+            if (r.depth >= 2 && heavy)
+                m_tethers.push_back(Tether{r.root, v, r.start, r.entry, r.length, at, {}});
+            return;
+        }
+    };
+    for (size_t u = 0; u < bodies; ++u) {
+        if (movable(m_bodies[u])) continue;
+        for (int k = m_jointStart[u]; k < m_jointStart[u + 1]; ++k) {
+            const int via = m_jointList[size_t(k)];
+            const Joint* j = m_solvedJoints[size_t(via)];
+            const bool uIsA = j->slotA == int(u);
+            const int v = uIsA ? j->slotB : j->slotA;
+            if (!movable(m_bodies[size_t(v)])) continue;
+            Reach r;
+            r.chain = via;
+            r.root = int(u);
+            r.via = via;
+            r.depth = 1;
+            r.start = (uIsA ? j->frameA() : j->frameB()).point;
+            r.entry = (uIsA ? j->frameB() : j->frameA()).point;
+            r.length = j->reach();
+            label(v, r);
+        }
+    }
+    for (size_t q = 0; q < m_reachQueue.size(); ++q) {
+        const int at = m_reachQueue[q], u = at / K;
+        for (int k = m_jointStart[size_t(u)]; k < m_jointStart[size_t(u) + 1]; ++k) {
+            const int via = m_jointList[size_t(k)];
+            const Reach& from = m_reach[size_t(at)];
+            if (via == from.via) continue; // back up the chain
+            const Joint* j = m_solvedJoints[size_t(via)];
+            const bool uIsA = j->slotA == u;
+            const int v = uIsA ? j->slotB : j->slotA;
+            if (!movable(m_bodies[size_t(v)])) continue;
+            const Vec3& exit = (uIsA ? j->frameA() : j->frameB()).point; // on u, in u's root frame
+            Reach r = from;
+            r.via = via;
+            r.parent = at;
+            r.depth = from.depth + 1;
+            r.entry = (uIsA ? j->frameB() : j->frameA()).point;
+            r.length = from.length + (exit - from.entry).norm() + j->reach();
+            label(v, r);
+        }
+    }
+}
+
+// Along the line from the chain's start to the body, at the poses now (a distance joint's upper limit). A
+// tether that cannot come taut within the sub-step (its slack more than twice what the body's outward speed
+// and a sub-step's gravity would close) stays off: most of a chain's tethers, most of the time.
+void ContactSolver::prepareTethers(Real h) {
+    const Real fall = m_settings.gravity * h;
+    for (Tether& t : m_tethers) {
+        const SolverBody &root = m_bodies[size_t(t.root)], &body = m_bodies[size_t(t.body)];
+        const Vec3 pRoot = root.origin + root.rotation * t.start, pBody = body.origin + body.rotation * t.end,
+                   d = pBody - pRoot;
+        const Real distance = d.norm(), slack = t.length - distance;
+        if (!(distance > Real(1e-6) * (t.length + 1))) { // at the start: no direction, and far from taut
+            t.row.off();
+            continue;
+        }
+        const Vec3 out = d / distance;
+        const Vec3 rRoot = pRoot - root.com, rBody = pBody - body.com;
+        const Real outward = out.dot(body.v + body.w.cross(rBody) - root.v - root.w.cross(rRoot));
+        if (slack > 2 * h * (std::max(outward, Real(0)) + fall)) {
+            t.row.off();
+            continue;
+        }
+        t.row.setLinear(root, body, -out, rRoot, rBody);
+        makeLimit(t.row, slack);
+    }
+}
+
+void ContactSolver::solveTethers(Real h, JointPass pass, const JointSoftness& soft) {
+    const bool push = pass == JointPass::PushOut;
+    for (Tether& t : m_tethers)
+        if (t.row.kind != RowKind::Off)
+            t.row.solveLimit(m_bodies[size_t(t.root)], m_bodies[size_t(t.body)], t.row.error, h, push, soft);
+}
+
+// Each joint from the root down to a tethered body carries the tether's pull (+ on the joint's b side when
+// the body below is its b).
+void ContactSolver::carryTethers() const {
+    for (const Tether& t : m_tethers) {
+        if (t.row.kind == RowKind::Off || t.row.impulse == 0) continue;
+        const Vec3 pull = t.row.impulse * t.row.n;
+        for (int at = t.reach; at >= 0;) {
+            const Reach& r = m_reach[size_t(at)];
+            Joint* j = m_solvedJoints[size_t(r.via)];
+            j->carry(j->slotB == at / kTethersPerBody ? pull : Vec3(-pull));
+            at = r.parent;
+        }
+    }
+}
+
+} // namespace physics
