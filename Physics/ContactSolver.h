@@ -245,7 +245,9 @@ private:
         Real lightest = 0;         // the largest inverse mass on the chain down to it (it included)
     };
     std::vector<Tether> m_tethers;
-    std::vector<Reach> m_reach; // kTethersPerBody per solver body
+    std::vector<Reach> m_reach;  // kTethersPerBody per node
+    std::vector<int> m_node;     // per solver slot: its node in the search (-1 between searches)
+    std::vector<int> m_nodeSlot; // per node: its solver slot
     std::vector<int> m_jointStart, m_jointList, m_jointCursor, m_reachQueue;
     static constexpr int kProjectionIterations = 4;
     static constexpr int kRestitutionSweeps = 8;

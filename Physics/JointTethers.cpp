@@ -32,8 +32,7 @@ namespace physics {
 
 void ContactSolver::tetherJoints() {
     m_tethers.clear();
-    const size_t bodies = m_bodies.size();
-    if (m_solvedJoints.size() < 2 || bodies == 0) return;
+    if (m_solvedJoints.size() < 2) return;
     // No body on a chain kTetherRatio times heavier than another on one (chains of like links): no tether.
     Real most = 0, least = std::numeric_limits<Real>::infinity(); // inverse masses
     for (const Joint* j : m_solvedJoints)
@@ -44,61 +43,85 @@ void ContactSolver::tetherJoints() {
             least = std::min(least, inverse);
         }
     if (!(kTetherRatio * least < most)) return;
-    // Each body's joints that keep a reach, listed per body (offsets in m_jointStart).
-    m_jointStart.assign(bodies + 1, 0);
-    for (const Joint* j : m_solvedJoints)
-        if (std::isfinite(j->reach())) {
-            ++m_jointStart[size_t(j->slotA) + 1];
-            ++m_jointStart[size_t(j->slotB) + 1];
+    // The jointed bodies, numbered apart (node), each one's joints that keep a reach listed (from
+    // m_jointStart[node]): the search costs what the joints do, not what the contacts' bodies do.
+    if (m_node.size() < m_bodies.size()) m_node.resize(m_bodies.size(), -1);
+    m_nodeSlot.clear();
+    auto node = [&](int slot) {
+        int& n = m_node[size_t(slot)];
+        if (n < 0) {
+            n = int(m_nodeSlot.size());
+            m_nodeSlot.push_back(slot);
         }
-    for (size_t i = 0; i < bodies; ++i) m_jointStart[i + 1] += m_jointStart[i];
-    m_jointList.resize(size_t(m_jointStart[bodies]));
+        return n;
+    };
+    m_jointStart.clear();
+    for (const Joint* j : m_solvedJoints)
+        if (std::isfinite(j->reach()))
+            for (int slot : {j->slotA, j->slotB}) {
+                const size_t n = size_t(node(slot));
+                if (m_jointStart.size() < n + 2) m_jointStart.resize(n + 2, 0);
+                ++m_jointStart[n + 1];
+            }
+    const size_t nodes = m_nodeSlot.size();
+    m_jointStart.resize(nodes + 1, 0);
+    for (size_t i = 0; i < nodes; ++i) m_jointStart[i + 1] += m_jointStart[i];
+    m_jointList.resize(size_t(m_jointStart[nodes]));
     m_jointCursor.assign(m_jointStart.begin(), m_jointStart.end() - 1);
     for (size_t k = 0; k < m_solvedJoints.size(); ++k) {
         const Joint* j = m_solvedJoints[k];
         if (!std::isfinite(j->reach())) continue;
-        m_jointList[size_t(m_jointCursor[size_t(j->slotA)]++)] = int(k);
-        m_jointList[size_t(m_jointCursor[size_t(j->slotB)]++)] = int(k);
+        m_jointList[size_t(m_jointCursor[size_t(m_node[size_t(j->slotA)])]++)] = int(k);
+        m_jointList[size_t(m_jointCursor[size_t(m_node[size_t(j->slotB)])]++)] = int(k);
     }
     // Breadth first from every chain start (a joint from an immovable body to a movable one): each body keeps
     // the first kTethersPerBody chains that reach it, no chain twice (a bridge pinned at both ends: both).
     constexpr int K = kTethersPerBody;
-    m_reach.assign(bodies * K, Reach{});
+    m_reach.assign(nodes * K, Reach{});
     m_reachQueue.clear();
-    // r reaches v, which is heavy when kTetherRatio times heavier than the lightest body above it.
+    // r reaches node v, which is heavy when kTetherRatio times heavier than the lightest body above it.
     auto label = [&](int v, Reach r) {
-        const Real inverse = m_bodies[size_t(v)].invMass;
+        const int slot = m_nodeSlot[size_t(v)];
+        const Real inverse = m_bodies[size_t(slot)].invMass;
         const bool heavy = kTetherRatio * inverse < r.lightest;
         r.lightest = std::max(r.lightest, inverse);
-        Reach* slot = &m_reach[size_t(v) * K];
+        Reach* kept = &m_reach[size_t(v) * K];
         for (int k = 0; k < K; ++k) {
-            if (slot[k].chain == r.chain) return; // reached by this chain already
-            if (slot[k].chain >= 0) continue;
-            slot[k] = r;
+            if (kept[k].chain == r.chain) return; // reached by this chain already
+            if (kept[k].chain >= 0) continue;
+            kept[k] = r;
             const int at = v * K + k;
             m_reachQueue.push_back(at);
             if (r.depth >= 2 && heavy)
-                m_tethers.push_back(Tether{r.root, v, r.start, r.entry, r.length, at, {}});
+                m_tethers.push_back(Tether{r.root, slot, r.start, r.entry, r.length, at, {}});
             return;
         }
     };
-    for (size_t u = 0; u < bodies; ++u) {
-        if (movable(m_bodies[u])) continue;
+    // The joint via from node u: the node at its other end, where it holds u and where it holds that one.
+    struct Across {
+        int v;
+        Vec3 onU, onV;
+    };
+    auto across = [&](int u, int via) {
+        const Joint* j = m_solvedJoints[size_t(via)];
+        const bool uIsA = j->slotA == m_nodeSlot[size_t(u)];
+        return Across{m_node[size_t(uIsA ? j->slotB : j->slotA)], (uIsA ? j->frameA() : j->frameB()).point,
+                      (uIsA ? j->frameB() : j->frameA()).point};
+    };
+    for (size_t u = 0; u < nodes; ++u) {
+        if (movable(m_bodies[size_t(m_nodeSlot[u])])) continue;
         for (int k = m_jointStart[u]; k < m_jointStart[u + 1]; ++k) {
             const int via = m_jointList[size_t(k)];
-            const Joint* j = m_solvedJoints[size_t(via)];
-            const bool uIsA = j->slotA == int(u);
-            const int v = uIsA ? j->slotB : j->slotA;
-            if (!movable(m_bodies[size_t(v)])) continue;
+            const Across x = across(int(u), via);
+            if (!movable(m_bodies[size_t(m_nodeSlot[size_t(x.v)])])) continue;
             Reach r;
-            r.chain = via;
-            r.root = int(u);
-            r.via = via;
+            r.chain = r.via = via;
+            r.root = m_nodeSlot[u];
             r.depth = 1;
-            r.start = (uIsA ? j->frameA() : j->frameB()).point;
-            r.entry = (uIsA ? j->frameB() : j->frameA()).point;
-            r.length = j->reach();
-            label(v, r);
+            r.start = x.onU;
+            r.entry = x.onV;
+            r.length = m_solvedJoints[size_t(via)]->reach();
+            label(x.v, r);
         }
     }
     for (size_t q = 0; q < m_reachQueue.size(); ++q) {
@@ -107,20 +130,18 @@ void ContactSolver::tetherJoints() {
             const int via = m_jointList[size_t(k)];
             const Reach& from = m_reach[size_t(at)];
             if (via == from.via) continue; // back up the chain
-            const Joint* j = m_solvedJoints[size_t(via)];
-            const bool uIsA = j->slotA == u;
-            const int v = uIsA ? j->slotB : j->slotA;
-            if (!movable(m_bodies[size_t(v)])) continue;
-            const Vec3& exit = (uIsA ? j->frameA() : j->frameB()).point; // on u, in u's root frame
+            const Across x = across(u, via);
+            if (!movable(m_bodies[size_t(m_nodeSlot[size_t(x.v)])])) continue;
             Reach r = from;
             r.via = via;
             r.parent = at;
             r.depth = from.depth + 1;
-            r.entry = (uIsA ? j->frameB() : j->frameA()).point;
-            r.length = from.length + (exit - from.entry).norm() + j->reach();
-            label(v, r);
+            r.entry = x.onV;
+            r.length = from.length + (x.onU - from.entry).norm() + m_solvedJoints[size_t(via)]->reach();
+            label(x.v, r);
         }
     }
+    for (int slot : m_nodeSlot) m_node[size_t(slot)] = -1; // ready for the next step
 }
 
 // Along the line from the chain's start to the body, at the poses now (a distance joint's upper limit). A
@@ -165,7 +186,7 @@ void ContactSolver::carryTethers() const {
         for (int at = t.reach; at >= 0;) {
             const Reach& r = m_reach[size_t(at)];
             Joint* j = m_solvedJoints[size_t(r.via)];
-            j->carry(j->slotB == at / kTethersPerBody ? pull : Vec3(-pull));
+            j->carry(j->slotB == m_nodeSlot[size_t(at / kTethersPerBody)] ? pull : Vec3(-pull));
             at = r.parent;
         }
     }
