@@ -71,6 +71,7 @@ struct SolverSettings {
     // every shape of radius over 14 mm on the ground, and a body down to 0.9 mm across rests within 0.5 % of
     // its size.
     float gravity = 9.81f;         // |g|, in length units per s^2 (the scene's gravity)
+    Vec3 up = Vec3::UnitY();       // against gravity, unit (zero in a world without gravity)
     float restingOverlap = 0.005f; // of the smaller shape's bounding radius
     float maxContactTurn = 6.2831853f;
     bool frictionOn = true, restitutionOn = true; // off: every pair's coefficient is 0 (iSceneSwitches)
@@ -264,6 +265,7 @@ private:
     std::vector<Turned> m_turned; // moveBodies' first pass, for its second
     std::vector<std::pair<size_t, bool>> m_shock;
     static constexpr Real kHeavyRatio = 10.0f; // shock propagation acts under a body this much heavier
+    static constexpr Real kSupportCos = 0.5f;  // ... that rests on it: their normal within 60 degrees of up
     // The soft contact for the current sub-step length: the world's, and a manifold's own (stiffer for a
     // small shape; SolverSettings::restingOverlap).
     struct Softness {

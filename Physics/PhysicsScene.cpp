@@ -103,6 +103,7 @@ bool PhysicsScene::setGravity(const Vector& g) {
     m_gravity = g;
     SolverSettings s = m_solver.settings();
     s.gravity = g.length(); // what a resting contact carries (SolverSettings::restingOverlap)
+    s.up = s.gravity > 0 ? Vec3(-toEigen(g) / s.gravity) : Vec3(Vec3::Zero()); // what rests on what
     m_solver.setSettings(s);
     return true;
 }

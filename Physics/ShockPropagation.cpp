@@ -6,9 +6,10 @@
 // the light box, before the accumulated impulses caught up (1:100 held). Shock propagation (Guendelman,
 // Bridson and Fedkiw, "Nonconvex rigid bodies with stacking", 2003; Erleben's thesis, 2004) orders the
 // bodies by their contact distance from the immovable world (level 0: fixed bodies and the static world;
-// level k + 1: touching a body of level k) and, lowest pairs first, treats the lower body of each pair as
-// immovable: the upper one alone is pushed until it no longer approaches (a point apart may close its gap
-// within the sub-step). The pass does not conserve momentum (the lower body feels no reaction), so it acts
+// level k + 1: touching a body of level k) and, lowest pairs first, treats the lower body of each pair on
+// which the upper one rests (their normal within 60 degrees of up: a stack, not a side hit) as immovable: the
+// upper one alone is pushed until it no longer approaches (a point apart may close its gap within the
+// sub-step). The pass does not conserve momentum (the lower body feels no reaction), so it acts
 // only on what the momentum-conserving solve left approaching; its impulses are not accumulated or warm
 // started, and friction does not see them. On the immovable world (where the ground must stop the light box
 // before the heavy one is stopped on it) the impulse is an ordinary one, and is accumulated. Pairs on one
@@ -71,6 +72,11 @@ void ContactSolver::orderByLevel() {
         const Manifold& m = m_manifolds[k];
         const int la = m_level[size_t(m.a)], lb = m_level[size_t(m.b)];
         if (la == lb || la == INT_MAX || lb == INT_MAX) continue;
+        // Only where the upper body rests on the lower: hit from the side (a wrecking ball into a wall of
+        // boxes), the lower body is not held by what it stands on, and treated as immovable it stopped a
+        // 500 kg ball dead against 10 kg boxes.
+        const Real up = m.points[0].normal.dot(m_settings.up); // the normal runs from a to b
+        if ((lb > la ? up : -up) < kSupportCos) continue;
         m_shock.push_back({k, lb > la}); // (manifold, whether b is the upper body)
     }
     // Only under a heavy body (below): with no heavy pair at all, nothing is kept, and the sort is skipped.
