@@ -244,6 +244,33 @@ void dropOnBridge(World& world, int frame) {
         world.name(world.box(Vector(0, 1.9f, 0), Vector(0.25f, 0.15f, 0.25f), 2.0f), "box");
 }
 
+void buildWreckingBall(World& world) {
+    world.ground();
+    // Laid out straight from the pivot, pulled out toward -x; each link 1 cm shorter than the pitch, so that
+    // neighbours never touch. A link's y axis runs along the chain (its rotation about z: -kWreckAngle).
+    const Vector down(-std::sin(kWreckAngle), -std::cos(kWreckAngle), 0);
+    const Vector half(0.04f, 0.5f * kWreckPitch - 0.005f, 0.04f);
+    const Matrix along = rotate(Vector(0, 0, 1), -kWreckAngle);
+    iRigidBody* above = nullptr;
+    for (int i = 0; i < kWreckLinks; ++i) {
+        iPhysicsFrame* link =
+            world.box(kWreckPivot + down * (kWreckPitch * (float(i) + 0.5f)), half, 0.5f, along);
+        world.joint(CreateBallJoint(link->getRB(), above, kWreckPivot + down * (kWreckPitch * float(i))));
+        above = link->getRB();
+    }
+    world.name(world.bodies().front(), "top");
+    const float reach = kWreckPitch * float(kWreckLinks);
+    iPhysicsFrame* ball =
+        world.name(world.sphere(kWreckPivot + down * (reach + kWreckRadius), kWreckRadius, 500.0f), "ball");
+    world.joint(CreateBallJoint(ball->getRB(), above, kWreckPivot + down * reach));
+    // The wall, standing on the floor across the bottom of the swing (the ball passes 1.2 to 2.0 m up).
+    const float side = 0.25f;
+    for (int layer = 0; layer < 5; ++layer)
+        for (int column = -2; column <= 2; ++column)
+            world.box(Vector(0, side + 2 * side * float(layer), 2 * side * float(column)),
+                      Vector(side, side, side), 10.0f);
+}
+
 void buildCloth(World& world) {
     world.ground();
     iPhysicsFrame* ball = world.name(world.sphere(Vector(0, 1.0f, 0), 0.5f, 1.0f), "sphere");
@@ -299,6 +326,8 @@ void addJointScenes(std::deque<SceneSpec>& scenes) {
          buildRagdoll, nullptr},
         {"rope-bridge", "a rope pinned at both ends, a box dropped on it (named: box)", buildRopeBridge,
          dropOnBridge},
+        {"wrecking-ball", "a 500 kg ball on a light chain swung through a wall of boxes (named: ball, top)",
+         buildWreckingBall, nullptr},
         {"cloth", "a soft body cloth dropped on a fixed sphere (named: sphere)", buildCloth, nullptr},
         {"soft-blob", "a round soft body dropped tilted on the floor", buildSoftBlob, nullptr},
     };

@@ -1,9 +1,10 @@
 // JointScenes.h - the demo scenes built with joints (a cradle on strings, a hinge chain, a motorised door,
-// a ragdoll, a rope bridge, cloth, a soft blob), registered with the built-in scenes (Scenes.cpp) and used by
-// the game tests. Sizes in metres, masses in kilograms; y is up and the floor is at y = 0. The World keeps
-// every joint, rope and soft body made here and deletes it with the scene.
+// a ragdoll, a rope bridge, a wrecking ball, cloth, a soft blob), registered with the built-in scenes
+// (Scenes.cpp) and used by the game tests. Sizes in metres, masses in kilograms; y is up and the floor is at
+// y = 0. The World keeps every joint, rope and soft body made here and deletes it with the scene.
 #pragma once
 
+#include "MathDeclarations.h"
 #include "Scenes.h"
 
 #include <deque>
@@ -37,6 +38,15 @@ void buildRagdoll(World& world);
 void buildRopeBridge(World& world);
 void dropOnBridge(World& world, int frame); // the rope bridge's act
 const int kBridgeDropFrame = 60;
+
+// A wrecking ball: a 500 kg sphere (0.4 m) on ten 0.5 kg box links (0.4 m, ball joints) from a pivot in the
+// world kWreckPivot, let go pulled out kWreckAngle toward -x; at the bottom of its swing it goes through a
+// wall of 25 boxes (0.5 m, 10 kg: five columns along z, five layers) standing across x = 0. Its links are a
+// thousandth of its mass: the chain holds it by tethers (Physics/JointTethers.cpp). Named: ball, top.
+void buildWreckingBall(World& world);
+const Vector kWreckPivot(0, 6, 0);
+const float kWreckAngle = 1.0472f, kWreckPitch = 0.4f, kWreckRadius = 0.4f; // 60 degrees; m; m
+const int kWreckLinks = 10, kWreckWallBoxes = 25;
 
 // A soft body (iSoftBody, a full 10 x 10 mask) level above a fixed sphere, dropped on it to drape. Named:
 // sphere.
