@@ -48,7 +48,7 @@ struct Wrecker {
 
 // Balls of 5 kg to 5 t (10 to 10,000 times a link) hang 5 s at the default settings: the ball stays within
 // 0.1 % of the chain's length from the pivot at every step (without tethers: 0.45 % at 5 kg, 36 % at
-// 500 kg, 3.7 times the length at 5 t), and the top joint holds up the ball and the links, (M + 5 kg) g,
+// 500 kg, 368 % at 5 t), and the top joint holds up the ball and the links, (M + 5 kg) g,
 // within 1 %.
 TEST(HeavyLoadOnAChain, HangsAtItsLengthWhateverTheMassRatio) {
     for (float m : {5.0f, 50.0f, 500.0f, 5000.0f}) {
