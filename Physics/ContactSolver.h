@@ -198,6 +198,8 @@ private:
     void solveContacts(Real h, ContactBlocks::Pass pass, bool measureGaps);
     void saveVelocities();
     void moveBodies(Real h);
+    void startKinematic();
+    void moveKinematic(Real done); // done: the share of the step behind them
     void restoreVelocities();
     // ShockPropagation.cpp
     void orderByLevel();
@@ -263,6 +265,12 @@ private:
     std::vector<int> m_scratch;
     std::vector<char> m_carries, m_keep;
     std::vector<Turned> m_turned; // moveBodies' first pass, for its second
+    struct Kinematic {
+        size_t slot;
+        Vec3 startOrigin, endOrigin;
+        Quat startRotation, endRotation;
+    };
+    std::vector<Kinematic> m_kinematic; // this step's kinematic bodies and their paths
     std::vector<std::pair<size_t, bool>> m_shock;
     static constexpr Real kHeavyRatio = 10.0f; // shock propagation acts under a body this much heavier
     static constexpr Real kSupportCos = 0.5f;  // ... that rests on it: their normal within 60 degrees of up
