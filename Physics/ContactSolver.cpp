@@ -311,8 +311,6 @@ void ContactSolver::startKinematic() {
     for (size_t i = 0; i < m_bodies.size(); ++i) {
         SolverBody& b = m_bodies[i];
         if (!b.root || movable(b) || (b.v == Vec3::Zero() && b.w == Vec3::Zero())) continue;
-        if (b.origin != b.com)
-            continue; // (an attachment root whose origin is off its centre: left at its end)
         m_kinematic.push_back(Kinematic{i, b.startOrigin, b.origin, b.startRotation, b.rotation});
         b.origin = b.com = b.startOrigin;
         b.rotation = b.startRotation;

@@ -55,16 +55,18 @@ void ContactSolver::tetherJoints() {
         }
         return n;
     };
-    m_jointStart.clear();
     for (const Joint* j : m_solvedJoints)
-        if (std::isfinite(j->reach()))
-            for (int slot : {j->slotA, j->slotB}) {
-                const size_t n = size_t(node(slot));
-                if (m_jointStart.size() < n + 2) m_jointStart.resize(n + 2, 0);
-                ++m_jointStart[n + 1];
-            }
+        if (std::isfinite(j->reach())) {
+            node(j->slotA);
+            node(j->slotB);
+        }
     const size_t nodes = m_nodeSlot.size();
-    m_jointStart.resize(nodes + 1, 0);
+    m_jointStart.assign(nodes + 1, 0);
+    for (const Joint* j : m_solvedJoints)
+        if (std::isfinite(j->reach())) {
+            ++m_jointStart[size_t(m_node[size_t(j->slotA)]) + 1];
+            ++m_jointStart[size_t(m_node[size_t(j->slotB)]) + 1];
+        }
     for (size_t i = 0; i < nodes; ++i) m_jointStart[i + 1] += m_jointStart[i];
     m_jointList.resize(size_t(m_jointStart[nodes]));
     m_jointCursor.assign(m_jointStart.begin(), m_jointStart.end() - 1);
