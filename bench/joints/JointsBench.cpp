@@ -10,15 +10,20 @@
 //    link's top to the bottom of the one above across a 2 cm gap. SpringStiff: the same springs at
 //    2,000 N/m, a chain that gains energy until its states are NaN (errors_per_step: the scene's validation
 //    reports and restores them), kept here as the reproducer;
+//  * tethers (Physics/JointTethers.cpp): 10 chains of 10 ball-jointed links with an 11th body at the bottom,
+//    a link's box and joint, kicked like the others: BallHeavyEnd 5 kg (10 times a link: a tether from the
+//    world to each), BallLikeEnd 0.5 kg (a like link: no tether, only the scan of the masses), each against
+//    the same bodies unjoined, so that the two rows set heavy-ended against like-ended at 110 joints each;
 //  * 60 steps at 60 Hz untimed, then 600 timed. BM_Chains/<kind> steps one kind against the free bodies;
 //    BM_AllKinds steps the six kinds and the free bodies in turn (the README's table).
 // Counters: ms per step of each scene; ratio (jointed / free); ns_per_joint_step, the added time per joint
-// and step ((jointed - free) / 200); allocs_per_step (operator new calls inside the timed steps, from this
-// program's counting operator new); errors_per_step (error() reports inside them; a counting handler
-// replaces the stderr line); finite (1 when every body's state is finite at the end); gap and gap_swinging
-// (ball, hinge, fixed: the largest anchor separation / link length after any step, and after any timed
-// step). The knob: ms and ratio to 4 iterations, ns per joint-step against the free scene, stretch (largest
-// anchor separation after any step, from the first, / link length) and stretch_swinging (after the warm-up).
+// and step ((jointed - free) / 200, or / 110); allocs_per_step (operator new calls inside the timed steps,
+// from this program's counting operator new); errors_per_step (error() reports inside them; a counting
+// handler replaces the stderr line); finite (1 when every body's state is finite at the end); gap and
+// gap_swinging (ball, hinge, fixed: the largest anchor separation / link length after any step, and after any
+// timed step). The knob: ms and ratio to 4 iterations, ns per joint-step against the free scene, stretch
+// (largest anchor separation after any step, from the first, / link length) and stretch_swinging (after the
+// warm-up).
 #include "RBDynamics.h"
 #include "World.h"
 #include "iBallJoint.h"
@@ -68,17 +73,24 @@ constexpr int kChains = 10, kLinks = 20;
 constexpr float kHalf = 0.05f, kLink = 2 * kHalf, kGap = 0.02f, kMass = 0.5f, kKick = 0.5f;
 constexpr int kWarmup = 60, kSteps = 600;
 
-// A 0.5 kg box 0.1 m tall (half extents 0.02, 0.05, 0.02) at p, with a box's inertia and no geometry.
-iRigidBody* linkBody(const Vector& p) {
+// Each chain's bodies and the mass of its last one (the others are links of kMass).
+struct Shape {
+    int bodies;
+    float endMass;
+};
+constexpr Shape kPlain{kLinks, kMass}, kHeavyEnd{11, 5.0f}, kLikeEnd{11, kMass};
+
+// A box of mass m 0.1 m tall (half extents 0.02, 0.05, 0.02) at p, with a box's inertia and no geometry.
+iRigidBody* linkBody(const Vector& p, float m = kMass) {
     iRigidBody* b = CreateRigidBody(nullptr);
     RBDynamics& d = b->getDynamics();
-    d.mass = kMass;
+    d.mass = m;
     d.position = p;
     const float hx = 0.02f, hy = kHalf, hz = 0.02f;
     Matrix inertia(1);
-    inertia.m11 = kMass * (hy * hy + hz * hz) / 3;
-    inertia.m22 = kMass * (hx * hx + hz * hz) / 3;
-    inertia.m33 = kMass * (hx * hx + hy * hy) / 3;
+    inertia.m11 = m * (hy * hy + hz * hz) / 3;
+    inertia.m22 = m * (hx * hx + hz * hz) / 3;
+    inertia.m33 = m * (hx * hx + hy * hy) / 3;
     d.setInertiaTensor(inertia);
     return b;
 }
@@ -92,10 +104,11 @@ Vector worldAnchor(const iRigidBody* body, const Vector& local) {
 
 bool finite(const Vector& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 
-// The chains of one kind (None: the same bodies, unjoined) in a scene of their own, at n solver iterations.
+// The chains of one kind and shape (None: the same bodies, unjoined) in a scene of their own, at n solver
+// iterations.
 class ChainScene {
 public:
-    ChainScene(Kind kind, int iterations) : m_kind(kind) {
+    ChainScene(Kind kind, int iterations, Shape shape = kPlain) : m_kind(kind), m_shape(shape) {
         m_timed = std::make_unique<TimedScene>([&](World& w) {
             settingsOf(w.scene())->setSleepingEnabled(false);
             settingsOf(w.scene())->setSolverIterations(iterations);
@@ -139,10 +152,11 @@ private:
         for (int c = 0; c < kChains; ++c) {
             const float x = float(c);
             iRigidBody* above = nullptr;
-            for (int i = 0; i < kLinks; ++i) {
+            for (int i = 0; i < m_shape.bodies; ++i) {
                 const float top = -pitch * float(i) - (gapped ? kGap : 0.0f); // this link's top
-                iRigidBody* b = linkBody(Vector(x, top - kHalf, 0));
-                if (i == kLinks - 1) b->getDynamics().velocity = Vector(kKick, 0, 0);
+                const bool last = i == m_shape.bodies - 1;
+                iRigidBody* b = linkBody(Vector(x, top - kHalf, 0), last ? m_shape.endMass : kMass);
+                if (last) b->getDynamics().velocity = Vector(kKick, 0, 0);
                 m_links.push_back(b);
                 // where it hangs from: the bottom of the link above, or the world point (x, 0, 0)
                 const Vector hang(x, above ? top + (gapped ? kGap : 0.0f) : 0.0f, 0);
@@ -183,6 +197,7 @@ private:
     }
 
     Kind m_kind;
+    Shape m_shape;
     std::unique_ptr<TimedScene> m_timed;
     std::vector<iRigidBody*> m_links;
     std::vector<iJoint*> m_joints;
@@ -225,14 +240,14 @@ std::vector<Measured> alternate(const std::vector<ChainScene*>& scenes, int warm
 }
 
 // One kind's chains against the same bodies unjoined.
-void BM_Chains(benchmark::State& state, Kind kind) {
+void BM_Chains(benchmark::State& state, Kind kind, Shape shape = kPlain) {
     std::vector<Measured> m;
     size_t joints = 0;
     bool ok = true;
     for (auto _ : state) {
         state.PauseTiming();
-        auto jointed = std::make_unique<ChainScene>(kind, 4);
-        auto free = std::make_unique<ChainScene>(Kind::None, 4);
+        auto jointed = std::make_unique<ChainScene>(kind, 4, shape);
+        auto free = std::make_unique<ChainScene>(Kind::None, 4, shape);
         state.ResumeTiming();
         m = alternate({jointed.get(), free.get()}, kWarmup, kSteps);
         state.PauseTiming(); // the checks and destructors are not measured
@@ -348,6 +363,10 @@ BENCHMARK_CAPTURE(BM_Chains, Fixed, Kind::Fixed)->Unit(benchmark::kMillisecond)-
 BENCHMARK_CAPTURE(BM_Chains, Distance, Kind::Distance)->Unit(benchmark::kMillisecond)->Iterations(1);
 BENCHMARK_CAPTURE(BM_Chains, Spring, Kind::Spring)->Unit(benchmark::kMillisecond)->Iterations(1);
 BENCHMARK_CAPTURE(BM_Chains, SpringStiff, Kind::SpringStiff)->Unit(benchmark::kMillisecond)->Iterations(1);
+BENCHMARK_CAPTURE(BM_Chains, BallHeavyEnd, Kind::Ball, kHeavyEnd)
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(1);
+BENCHMARK_CAPTURE(BM_Chains, BallLikeEnd, Kind::Ball, kLikeEnd)->Unit(benchmark::kMillisecond)->Iterations(1);
 BENCHMARK(BM_AllKinds)->Unit(benchmark::kMillisecond)->Iterations(1);
 BENCHMARK(BM_HingeIterations)->Unit(benchmark::kMillisecond)->Iterations(1);
 
