@@ -225,8 +225,8 @@ private:
     Real m_h = 0;                                 // its sub-step
     std::vector<Joint*> m_joints, m_solvedJoints; // set for the step; entered (both bodies not resting)
     std::vector<std::pair<const RBDynamics*, const RBDynamics*>> m_noContact; // joined roots, sorted
-    // Tethers (JointTethers.cpp): a body two joints or more down a chain from an immovable body, kept within
-    // the chain's length of where the chain starts on it (from the two nearest chain starts at most).
+    // Tethers (JointTethers.cpp): a body two joints or more down a chain from an immovable body or a heavy
+    // movable one, kept within the chain's length of where the chain starts on it (two chains at most).
     static constexpr int kTethersPerBody = 2;
     static constexpr Real kTetherRatio = 4; // a body this many times the lightest above it is tethered
     struct Tether {
@@ -236,10 +236,11 @@ private:
         int reach;       // the body's reach (m_reach) this tether follows back up the chain
         JointRow row;    // pulls the body toward start, at length
     };
-    // How a chain from an immovable body reached a body (kTethersPerBody a body). Points in root frames.
+    // How a chain from its start (JointTethers.cpp) reached a body (kTethersPerBody a body). Points in root
+    // frames.
     struct Reach {
         int chain = -1;            // the chain's first joint (m_solvedJoints): -1, not reached
-        int root = -1, via = -1;   // the immovable body; the joint from the parent
+        int root = -1, via = -1;   // the chain's start; the joint from the parent
         int parent = -1;           // the parent's reach, -1 at the root
         int depth = 0;             // joints from the root
         Vec3 start = Vec3::Zero(); // the chain's start on its root
@@ -251,7 +252,7 @@ private:
     std::vector<Reach> m_reach;  // kTethersPerBody per node
     std::vector<int> m_node;     // per solver slot: its node in the search (-1 between searches)
     std::vector<int> m_nodeSlot; // per node: its solver slot
-    std::vector<int> m_jointStart, m_jointList, m_jointCursor, m_reachQueue;
+    std::vector<int> m_jointStart, m_jointList, m_jointCursor, m_reachQueue, m_heavyFirst;
     static constexpr int kProjectionIterations = 4;
     static constexpr int kRestitutionSweeps = 8;
     std::vector<std::pair<size_t, int>> m_bouncing; // (manifold, point) of the points that bounce this step

@@ -1,25 +1,29 @@
-// JointTethers.cpp - tethers: a chain hung from an immovable body holds a heavy load at the end of light
-// links.
+// JointTethers.cpp - tethers: a chain holds a heavy load at the end of light links, hung from an immovable
+// body or from a heavy movable one.
 //
 // Sequential impulses pass a load down a chain one joint at a time, and a joint between a heavy body and a
 // light one converges at about the rate of their mass ratio: a 500 kg ball on ten 0.5 kg ball-jointed links
 // stretched them 36 % at 4 sub-steps and, swung, fell off them. A chain whose joints keep their anchors
 // within a reach (ball, hinge and fixed joints: together; a distance joint: within its maximum) can never
-// hold a body further from where it starts on an immovable body (the world, a fixed, kinematic or sleeping
-// body) than the sum of those reaches and of the distances between each link's two anchors. A tether is that
-// bound as one more one-sided row, from the chain's start straight to the body (a distance joint's upper
-// limit): it does nothing while the chain is slack or bent, and when the chain is pulled straight it holds
-// the body in one row, whatever the mass ratio, as the chain would. It only ever asks what the joints already
-// imply (the long-range attachments of Kim, Chentanez and Mueller, "Long Range Attachments", 2012, for
-// cloth). The joints on the way carry the tether's impulse in their reactions (Joint::carry): what they
-// report, and what breaks them, is what they would have carried without it.
+// hold a body further from where it starts than the sum of those reaches and of the distances between each
+// link's two anchors. A tether is that bound as one more one-sided row, from the chain's start straight to
+// the body (a distance joint's upper limit): it does nothing while the chain is slack or bent, and when the
+// chain is pulled straight it holds the body in one row, whatever the mass ratio, as the chain would. It only
+// ever asks what the joints already imply (the long-range attachments of Kim, Chentanez and Mueller, "Long
+// Range Attachments", 2012, for cloth). The joints on the way carry the tether's impulse in their reactions
+// (Joint::carry): what they report, and what breaks them, is what they would have carried without it.
 //
-// Each step a breadth-first search from every chain start (a joint from an immovable body to a movable one)
-// along the solved joints gives each body the first two chains that reach it (a bridge pinned at both ends:
-// one from each pin). A body two joints or more down a chain that is more than kTetherRatio (4) times heavier
-// than the lightest body above it on that chain gets a tether: a chain of like links converges well without
-// (and pays only for a scan of its masses), a heavy load is what it cannot hold. Sliders and springs let
-// their anchors part: a chain ends at one. A tether too slack to come taut within a sub-step is off for it.
+// A chain starts at an immovable body (the world, a fixed, kinematic or sleeping body) or at a movable one
+// more than kTetherRatio (4) times heavier than the body its first joint leads to: a crane's arm, whose
+// chain from the world bends where the arm ends and so never comes taut, or one ball of a flail, with no
+// immovable body at all (a 500 kg ball under a welded 2 t arm stretched its links 144 %; two 50 kg balls
+// spun on the links, 3.4 %). Each step a breadth-first search along the solved joints, first from every
+// immovable start and then from each movable one, heaviest first, gives each body the first two chains that
+// reach it (a bridge pinned at both ends: one from each pin). A body two joints or more down a chain that is
+// more than kTetherRatio times heavier than the lightest body above it on that chain, and no heavier than a
+// movable start, gets a tether: a chain of like links converges well without (and pays only for a scan of
+// its masses), a heavy load is what it cannot hold. Sliders and springs let their anchors part: a chain ends
+// at one. A tether too slack to come taut within a sub-step is off for it.
 #include "ContactSolver.h"
 #include "Joint.h"
 #include "SolverRows.h"
@@ -84,8 +88,12 @@ void ContactSolver::tetherJoints() {
     // r reaches node v, which is heavy when kTetherRatio times heavier than the lightest body above it.
     auto label = [&](int v, Reach r) {
         const int slot = m_nodeSlot[size_t(v)];
-        const Real inverse = m_bodies[size_t(slot)].invMass;
-        const bool heavy = kTetherRatio * inverse < r.lightest;
+        if (slot == r.root) return; // a loop back to a movable root
+        const Real inverse = m_bodies[size_t(slot)].invMass, rootInverse = m_bodies[size_t(r.root)].invMass;
+        // A movable root tethers only what is no heavier than itself (of two alike, the later slot): the
+        // other's chain would give the same row again.
+        const bool under = rootInverse < inverse || (rootInverse == inverse && r.root < slot);
+        const bool heavy = kTetherRatio * inverse < r.lightest && under;
         r.lightest = std::max(r.lightest, inverse);
         Reach* kept = &m_reach[size_t(v) * K];
         for (int k = 0; k < K; ++k) {
@@ -110,12 +118,15 @@ void ContactSolver::tetherJoints() {
         return Across{m_node[size_t(uIsA ? j->slotB : j->slotA)], (uIsA ? j->frameA() : j->frameB()).point,
                       (uIsA ? j->frameB() : j->frameA()).point};
     };
-    for (size_t u = 0; u < nodes; ++u) {
-        if (movable(m_bodies[size_t(m_nodeSlot[u])])) continue;
+    // The chains from node u: along each of its joints to a movable body (from a movable u, only to one
+    // kTetherRatio times lighter than u).
+    auto seed = [&](size_t u) {
+        const SolverBody& root = m_bodies[size_t(m_nodeSlot[u])];
         for (int k = m_jointStart[u]; k < m_jointStart[u + 1]; ++k) {
             const int via = m_jointList[size_t(k)];
             const Across x = across(int(u), via);
-            if (!movable(m_bodies[size_t(m_nodeSlot[size_t(x.v)])])) continue;
+            const SolverBody& next = m_bodies[size_t(m_nodeSlot[size_t(x.v)])];
+            if (!movable(next) || (movable(root) && !(kTetherRatio * root.invMass < next.invMass))) continue;
             Reach r;
             r.chain = r.via = via;
             r.root = m_nodeSlot[u];
@@ -125,23 +136,44 @@ void ContactSolver::tetherJoints() {
             r.length = m_solvedJoints[size_t(via)]->reach();
             label(x.v, r);
         }
-    }
-    for (size_t q = 0; q < m_reachQueue.size(); ++q) {
-        const int at = m_reachQueue[q], u = at / K;
-        for (int k = m_jointStart[size_t(u)]; k < m_jointStart[size_t(u) + 1]; ++k) {
-            const int via = m_jointList[size_t(k)];
-            const Reach& from = m_reach[size_t(at)];
-            if (via == from.via) continue; // back up the chain
-            const Across x = across(u, via);
-            if (!movable(m_bodies[size_t(m_nodeSlot[size_t(x.v)])])) continue;
-            Reach r = from;
-            r.via = via;
-            r.parent = at;
-            r.depth = from.depth + 1;
-            r.entry = x.onV;
-            r.length = from.length + (x.onU - from.entry).norm() + m_solvedJoints[size_t(via)]->reach();
-            label(x.v, r);
+    };
+    size_t q = 0;
+    auto search = [&] {
+        for (; q < m_reachQueue.size(); ++q) {
+            const int at = m_reachQueue[q], u = at / K;
+            for (int k = m_jointStart[size_t(u)]; k < m_jointStart[size_t(u) + 1]; ++k) {
+                const int via = m_jointList[size_t(k)];
+                const Reach& from = m_reach[size_t(at)];
+                if (via == from.via) continue; // back up the chain
+                const Across x = across(u, via);
+                if (!movable(m_bodies[size_t(m_nodeSlot[size_t(x.v)])])) continue;
+                Reach r = from;
+                r.via = via;
+                r.parent = at;
+                r.depth = from.depth + 1;
+                r.entry = x.onV;
+                r.length = from.length + (x.onU - from.entry).norm() + m_solvedJoints[size_t(via)]->reach();
+                label(x.v, r);
+            }
         }
+    };
+    // First the chains from immovable bodies, then those from movable ones, heaviest first (a crane's arm
+    // before the ball it holds, whose chain up the links would leave the arm's no way down), each into the
+    // places the ones before left: a bridge keeps both its pins.
+    for (size_t u = 0; u < nodes; ++u)
+        if (!movable(m_bodies[size_t(m_nodeSlot[u])])) seed(u);
+    search();
+    m_heavyFirst.clear();
+    for (size_t u = 0; u < nodes; ++u)
+        if (movable(m_bodies[size_t(m_nodeSlot[u])])) m_heavyFirst.push_back(int(u));
+    std::sort(m_heavyFirst.begin(), m_heavyFirst.end(), [&](int a, int b) {
+        const Real ia = m_bodies[size_t(m_nodeSlot[size_t(a)])].invMass,
+                   ib = m_bodies[size_t(m_nodeSlot[size_t(b)])].invMass;
+        return ia < ib || (ia == ib && a < b);
+    });
+    for (int u : m_heavyFirst) {
+        seed(size_t(u));
+        search();
     }
     for (int slot : m_nodeSlot) m_node[size_t(slot)] = -1; // ready for the next step
 }

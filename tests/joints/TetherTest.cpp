@@ -1,10 +1,12 @@
-// TetherTest.cpp - a heavy load on a light chain hung from the world, through whole scenes (tethers,
-// JointTethers.cpp): it hangs at the chain's length and swings with the period of a pendulum that long
-// whatever the mass ratio, its joints report and break under the load they carry, and a chain ends at a
-// slider (whose anchors part) but runs through a rope's slack links, and it may hang from a moving hook.
+// TetherTest.cpp - a heavy load on a light chain, through whole scenes (tethers, JointTethers.cpp): hung from
+// the world it hangs at the chain's length and swings with the period of a pendulum that long whatever the
+// mass ratio, its joints report and break under the load they carry, and a chain ends at a slider (whose
+// anchors part) but runs through a rope's slack links; it may hang from a moving hook or a heavy movable arm,
+// and a flail of two heavy balls with no immovable body keeps its length as it spins.
 #include "JointTestSupport.h"
 #include "iBallJoint.h"
 #include "iDistanceJoint.h"
+#include "iFixedJoint.h"
 #include "iRope.h"
 #include "iSliderJoint.h"
 
@@ -215,4 +217,109 @@ TEST(Tethers, AChainHangsFromAMovingKinematicHook) {
     for (iJoint* j : joints) j->Delete();
     for (iRigidBody* b : bodies) b->Delete();
     hook->Delete();
+}
+
+// A chain may hang from a heavy movable body: a 2 t arm, 2 m long along x, welded to the world at its near
+// end, with the 500 kg ball on its ten 0.5 kg links from its far end, kicked along z at 0.4 m/s. The chain
+// from the world through the weld bends at the arm's end, so that chain's tether is never taut; the arm's own
+// chain holds the ball: at no step over 5 s is it further from the arm's end than the chain's length by
+// 0.1 % (measured 0.0001 %; with tethers from immovable bodies only, 144 %), and the weld keeps the arm's end
+// within 1 mm.
+TEST(Tethers, AChainHangsFromAHeavyMovableArm) {
+    StepScene s(60);
+    iRigidBody* arm = boxBody(Vector(1, 0, 0), 2000.0f, 1.0f, 0.1f, 0.1f);
+    iJoint* weld = CreateFixedJoint(arm, nullptr, Vector(0, 0, 0));
+    ASSERT_NE(weld, nullptr);
+    std::vector<iJoint*> joints;
+    std::vector<iRigidBody*> bodies;
+    iRigidBody* above = arm;
+    for (int i = 0; i < kLinks; ++i) {
+        iRigidBody* b = boxBody(Vector(2, -kHalf - 2 * kHalf * i, 0), kLinkMass, 0.03f, kHalf, 0.03f);
+        joints.push_back(CreateBallJoint(b, above, Vector(2, -2 * kHalf * i, 0)));
+        bodies.push_back(b);
+        above = b;
+    }
+    iRigidBody* ball = sphereBody(Vector(2, -kLength, 0), 500.0f, kRadius);
+    joints.push_back(CreateBallJoint(ball, bodies.back(), Vector(2, -2 * kHalf * kLinks, 0)));
+    bodies.push_back(ball);
+    ball->getDynamics().velocity = Vector(0, 0, 0.4f);
+    float worst = 0, armMoved = 0;
+    s.recorder.fn = [&] {
+        const RBDynamics& a = arm->getDynamics();
+        const Vector end = a.getWorldOrigin() + a.orientation.direction(Vector(1, 0, 0));
+        worst = std::max(worst, (ball->getDynamics().position - end).length() / kLength - 1);
+        armMoved = std::max(armMoved, (end - Vector(2, 0, 0)).length());
+    };
+    s.seconds(5);
+    EXPECT_LT(worst, 0.001f) << "stretch " << worst * 100 << " %";
+    EXPECT_LT(armMoved, 0.001f);
+    std::printf(
+        "[ measured ] 500 kg under a welded 2 t arm: worst stretch %.4f %%, the arm's end moved %.5f m\n",
+        worst * 100, armMoved);
+    for (iJoint* j : joints) j->Delete();
+    weld->Delete();
+    for (iRigidBody* b : bodies) b->Delete();
+    arm->Delete();
+}
+
+// No immovable body at all: a flail, two 50 kg balls joined by the ten 0.5 kg links (2 m), thrown spinning
+// at 3 rad/s about its middle and falling. Each ball pulls on the light links with m w^2 r (540 N); the balls
+// hold each other by a tether. At no step over 3 s are they further apart than the chain's length by 0.1 %
+// (measured 0.018 %; with tethers from immovable bodies only, 3.4 %). The angular momentum about the centre
+// of mass (gravity exerts no torque about it) never grows, and shrinks by no more than a solve at velocity
+// level takes from a rigid turn: each sub-step h moves a body straight, and the next finds its velocity
+// w h off the new tangent and keeps cos(w h) of it, (cos w h)^720 = 0.945 over 3 s at 4 sub-steps
+// (measured 0.957; 0.989 without the tether, the chain stretching instead).
+TEST(Tethers, ASpinningFlailKeepsItsLength) {
+    StepScene s(60);
+    const float span = 2 * kHalf * kLinks, length = span + 2 * kRadius, w = 3.0f;
+    std::vector<iJoint*> joints;
+    iRigidBody* left = sphereBody(Vector(-kRadius, 0, 0), 50.0f, kRadius);
+    std::vector<iRigidBody*> bodies{left};
+    for (int i = 0; i < kLinks; ++i) {
+        iRigidBody* b = boxBody(Vector(kHalf + 2 * kHalf * i, 0, 0), kLinkMass, kHalf, 0.03f, 0.03f);
+        joints.push_back(CreateBallJoint(b, bodies.back(), Vector(2 * kHalf * i, 0, 0)));
+        bodies.push_back(b);
+    }
+    iRigidBody* right = sphereBody(Vector(span + kRadius, 0, 0), 50.0f, kRadius);
+    joints.push_back(CreateBallJoint(right, bodies.back(), Vector(span, 0, 0)));
+    bodies.push_back(right);
+    for (iRigidBody* b : bodies) { // turning about z through the middle, x = 1 m
+        RBDynamics& d = b->getDynamics();
+        d.velocity = Vector(0, w * (d.position.x - 0.5f * span), 0);
+        d.angularVelocity = Vector(0, 0, w);
+    }
+    auto spin = [&] { // about the centre of mass: sum m (p - c) x v + each body's own
+        Vector c(0, 0, 0), l(0, 0, 0);
+        float total = 0;
+        for (iRigidBody* b : bodies) {
+            c += b->getDynamics().position * b->getDynamics().mass;
+            total += b->getDynamics().mass;
+        }
+        c = c / total;
+        for (iRigidBody* b : bodies) {
+            const RBDynamics& d = b->getDynamics();
+            l += cross(d.position - c, d.velocity) * d.mass + d.angularMomentum;
+        }
+        return l;
+    };
+    s.step();
+    const Vector before = spin();
+    float worst = 0;
+    s.recorder.fn = [&] {
+        worst = std::max(
+            worst, (right->getDynamics().position - left->getDynamics().position).length() / length - 1);
+    };
+    s.seconds(3);
+    const Vector after = spin();
+    EXPECT_LT(worst, 0.001f) << "stretch " << worst * 100 << " %";
+    const float kept = after.z / before.z, bound = std::pow(std::cos(w / 240), 720.0f);
+    EXPECT_LE(kept, 1.0f) << after.z << " against " << before.z;
+    EXPECT_GE(kept, bound) << after.z << " against " << before.z;
+    EXPECT_LT(std::fabs(after.x) + std::fabs(after.y), 0.01f * before.z); // about z it stays
+    std::printf(
+        "[ measured ] spinning flail: worst stretch %.4f %%, angular momentum %.2f -> %.2f kg m^2/s\n",
+        worst * 100, before.z, after.z);
+    for (iJoint* j : joints) j->Delete();
+    for (iRigidBody* b : bodies) b->Delete();
 }
