@@ -5,7 +5,8 @@
 // speculative contacts are what our soft-contact solver does for points already found). For every awake
 // movable root it asks the collision space (iShapeCast.h) where along start pose -> end pose its geometry
 // first touched another body's geometry (moving along that body's own motion if it is swept too, else at
-// its end pose); on a hit it moves the body back there (a hair into the contact), keeping its velocity.
+// its end pose); on a hit it moves the body back there (a hair into the contact), keeping its velocity, and
+// then moves the bodies jointed to it, positions only, until their joints hold again (closeJoints).
 // The next step finds that contact at its starting pose and resolves it like any other: restitution,
 // friction, the pair's masses. The remaining time of the step is lost, as in Box2D. The step's start pose is
 // taken after the game's edits, so a teleport is never swept. A space without iShapeCast gets no continuous
@@ -19,6 +20,7 @@
 
 namespace physics {
 
+class Joint;
 class RigidBody;
 
 class ContinuousStage {
@@ -28,8 +30,14 @@ public:
     size_t run(const std::vector<RigidBody*>& bodies, iShapeCast* cast);
 
 private:
+    static constexpr int kJointSweeps = 16;    // of the joints' positional closing (closeJoints)
+    static constexpr float kJointSlop = 1e-4f; // m: a joint apart by less is left to the solver
+    void closeJoints();
+
     std::vector<BodySweep> m_sweeps; // scratch, reused: a step allocates nothing after warm-up
     std::vector<RigidBody*> m_owners;
+    std::vector<RigidBody*> m_putBack; // this step's put back, then the bodies jointed to them
+    std::vector<Joint*> m_closing;     // the joints closeJoints closes
 };
 
 } // namespace physics

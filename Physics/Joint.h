@@ -64,6 +64,9 @@ public:
     // This step's frames, in the solver bodies' root frames.
     const JointFrame& frameA() const { return m_frameA; }
     const JointFrame& frameB() const { return m_frameB; }
+    // The current poses of the two frames, world, from RBDynamics (the getters: angle, length, ...; the
+    // continuous stage's closing of joints).
+    void worldFrames(JointFrame& a, JointFrame& b) const;
     // An impulse on its bodies that a tether took over from it this sub-step (+ on b, - on a): its reaction,
     // and what breaks it, include it.
     void carry(const Vec3& impulse) { m_carried += impulse; }
@@ -119,8 +122,6 @@ protected:
     // Frames in each body's own frame (relative to its frame's origin; the world's in world coordinates),
     // and this step's, in the solver bodies' root frames (JointRows.h).
     JointFrame m_localA, m_localB, m_frameA, m_frameB;
-    // The current poses of the two frames, for the getters (angle, length, ...): world, from RBDynamics.
-    void worldFrames(JointFrame& a, JointFrame& b) const;
     Real anchorDistance() const; // between the two anchors now (distance joints, springs)
 
 private:
