@@ -1,6 +1,8 @@
 // ContactResolution.cpp - scene bodies in and out of the contact solver.
 #include "ContactResolution.h"
 
+#include "JointClosing.h"
+
 #include "Integrators.h"
 #include "MathEigen.h"
 #include "RigidBody.h"
@@ -90,7 +92,7 @@ void SceneBodyAccess::storePose(const SolverBody& b) const {
     if (b.invMass != 0.0f) m_mass[size_t(b.slot)].body->writePosition(b.origin);
 }
 
-void SceneBodyAccess::acceptWrites(const std::vector<SolverBody>& bodies) const {
+void SceneBodyAccess::acceptWrites(const std::vector<SolverBody>& bodies, JointClosing& closing) const {
     for (const SolverBody& b : bodies) {
         if (!b.root) continue;
         if (b.invMass == 0.0f) {
@@ -104,6 +106,7 @@ void SceneBodyAccess::acceptWrites(const std::vector<SolverBody>& bodies) const 
         body->writtenOrientation = b.root->orientation;
         body->rotation = b.rotation;
         body->projectedBy = toVector(b.projection);
+        if (b.projection != Vec3::Zero()) closing.add(body, false); // moved alone: its joints follow
     }
 }
 

@@ -19,6 +19,7 @@ struct CollisionContact;
 
 namespace physics {
 
+class JointClosing;
 class RigidBody;
 
 class SceneBodyAccess final : public SolverBodyAccess {
@@ -40,8 +41,9 @@ public:
     bool alive(const RBDynamics* root) const override;
     bool resting(const RBDynamics* root) const override;
     // Records the solver's writes as the simulator's own, so the next step does not take them for edits;
-    // every body leaves the solver (solverSlot -1).
-    void acceptWrites(const std::vector<SolverBody>& bodies) const;
+    // every body leaves the solver (solverSlot -1). A body projected out of a deep overlap goes to closing
+    // (its joints' partners follow it).
+    void acceptWrites(const std::vector<SolverBody>& bodies, JointClosing& closing) const;
 
 private:
     struct Mass {

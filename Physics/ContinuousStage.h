@@ -6,7 +6,7 @@
 // movable root it asks the collision space (iShapeCast.h) where along start pose -> end pose its geometry
 // first touched another body's geometry (moving along that body's own motion if it is swept too, else at
 // its end pose); on a hit it moves the body back there (a hair into the contact), keeping its velocity, and
-// then moves the bodies jointed to it, positions only, until their joints hold again (closeJoints).
+// hands it to the step's JointClosing, held there (its joints' partners follow it).
 // The next step finds that contact at its starting pose and resolves it like any other: restitution,
 // friction, the pair's masses. The remaining time of the step is lost, as in Box2D. The step's start pose is
 // taken after the game's edits, so a teleport is never swept. A space without iShapeCast gets no continuous
@@ -20,24 +20,18 @@
 
 namespace physics {
 
-class Joint;
+class JointClosing;
 class RigidBody;
 
 class ContinuousStage {
 public:
     // Sweeps the awake movable unattached bodies' motion of this step in the space's shape cast (nullptr:
     // none); returns how many were put back.
-    size_t run(const std::vector<RigidBody*>& bodies, iShapeCast* cast);
+    size_t run(const std::vector<RigidBody*>& bodies, iShapeCast* cast, JointClosing& closing);
 
 private:
-    static constexpr int kJointSweeps = 16;    // of the joints' positional closing (closeJoints)
-    static constexpr float kJointSlop = 1e-4f; // m: a joint apart by less is left to the solver
-    void closeJoints();
-
     std::vector<BodySweep> m_sweeps; // scratch, reused: a step allocates nothing after warm-up
     std::vector<RigidBody*> m_owners;
-    std::vector<RigidBody*> m_putBack; // this step's put back, then the bodies jointed to them
-    std::vector<Joint*> m_closing;     // the joints closeJoints closes
 };
 
 } // namespace physics

@@ -345,14 +345,17 @@ void PhysicsScene::step(float dt) {
         else if (m_space->getContactList() != contacts || m_space->getNumContacts() != contactCount)
             m_solver.recollect(m_space->getContactList(), m_space->getNumContacts(), m_bodyAccess);
         m_solver.solve(dt, m_bodyAccess);
-        m_bodyAccess.acceptWrites(m_solver.bodies());
+        m_bodyAccess.acceptWrites(m_solver.bodies(), m_jointClosing);
         finishJoints(); // reactions; a joint past its break force breaks
     }
     m_profiler.lap(&PhysicsProfile::solver);
 
     // 7b. Continuous collision: a body whose motion passed into or through something goes back to where it
     //     first touched it; the next step resolves that contact (ContinuousStage.h).
-    if (m_continuousOn) m_continuous.run(bodies(), m_spaceCast);
+    if (m_continuousOn) m_continuous.run(bodies(), m_spaceCast, m_jointClosing);
+    // 7c. What the solver's projection or the continuous stage moved alone takes its joints' partners along,
+    //     positions only, a put-back body held where it was put (JointClosing.h).
+    m_jointClosing.close();
     m_profiler.lap(&PhysicsProfile::continuous);
 
     // 8. A step that produced NaN or Inf (absurd forces) is undone; otherwise it is the new valid state.

@@ -12,6 +12,7 @@
 #include "ContactSolver.h"
 #include "ContinuousStage.h"
 #include "Islands.h"
+#include "JointClosing.h"
 #include "StepProfiler.h"
 #include "iDebugDrawable.h"
 #include "iPhysicsScene.h"
@@ -190,6 +191,7 @@ private:
     Islands m_islands;
     bool m_sleeping = true;
     ContinuousStage m_continuous;
+    JointClosing m_jointClosing;
     bool m_continuousOn = true;
     StepProfiler m_profiler;
     bool m_lastStepSolved = false; // the solver ran in the last step (its manifolds are that step's)

@@ -122,9 +122,8 @@ public:
     // drawn now).
     void writeFrameAfterParent(float alpha, unsigned long long round);
     static unsigned long long newFrameRound();
-    // The continuous stage's closing of joints (ContinuousStage::closeJoints): put back this step; its joints
-    // listed; queued to be.
-    bool ccdHeld = false, ccdWalked = false, ccdQueued = false;
+    // The step's closing of joints (JointClosing.h): held where it was put; its joints listed; queued.
+    bool closingHeld = false, closingWalked = false, closingQueued = false;
     bool pendingRemoval = false; // remove() during a step, or kill(): skipped now, removed when the step ends
     int sceneSlot = -1;          // its place in its scene's list of bodies (PhysicsScene::bodies)
     // The world pose (COM, rotation) at the start of the current step.
