@@ -16,6 +16,7 @@ void JointClosing::add(RigidBody* b, bool held) {
     if (b->closingQueued) return;
     b->closingQueued = true;
     m_bodies.push_back(b);
+    m_depth.push_back(0);
 }
 
 namespace {
@@ -50,14 +51,17 @@ void JointClosing::close() {
     // first), in the order they are reached.
     for (size_t k = 0; k < m_bodies.size(); ++k) {
         RigidBody* body = m_bodies[k];
+        const int depth = m_depth[k];
         body->closingWalked = true;
         for (Joint* j : body->joints) {
             RigidBody* other = j->bodyA() == body ? j->bodyB() : j->bodyA();
             if (!j->acting() || !std::isfinite(j->reach()) || (other && other->closingWalked)) continue;
             m_closing.push_back(j);
-            if (other && projectable(other) && !other->closingHeld && !other->closingQueued) {
+            if (other && projectable(other) && !other->closingHeld && !other->closingQueued &&
+                depth + 1 < kDepth) {
                 other->closingQueued = true;
                 m_bodies.push_back(other); // walked for its joints, not held
+                m_depth.push_back(depth + 1);
             }
         }
     }
@@ -87,6 +91,7 @@ void JointClosing::close() {
         }
     for (RigidBody* b : m_bodies) b->closingHeld = b->closingWalked = b->closingQueued = false;
     m_bodies.clear();
+    m_depth.clear();
 }
 
 } // namespace physics
