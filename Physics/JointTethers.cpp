@@ -163,9 +163,19 @@ void ContactSolver::tetherJoints() {
     for (size_t u = 0; u < nodes; ++u)
         if (!movable(m_bodies[size_t(m_nodeSlot[u])])) seed(u);
     search();
+    // The movable starts: a body more than kTetherRatio times heavier than one it is jointed to (a chain of
+    // like links has none, and sorts nothing).
     m_heavyFirst.clear();
-    for (size_t u = 0; u < nodes; ++u)
-        if (movable(m_bodies[size_t(m_nodeSlot[u])])) m_heavyFirst.push_back(int(u));
+    for (size_t u = 0; u < nodes; ++u) {
+        const SolverBody& body = m_bodies[size_t(m_nodeSlot[u])];
+        if (!movable(body)) continue;
+        for (int k = m_jointStart[u]; k < m_jointStart[u + 1]; ++k)
+            if (kTetherRatio * body.invMass <
+                m_bodies[size_t(m_nodeSlot[size_t(across(int(u), m_jointList[size_t(k)]).v)])].invMass) {
+                m_heavyFirst.push_back(int(u));
+                break;
+            }
+    }
     std::sort(m_heavyFirst.begin(), m_heavyFirst.end(), [&](int a, int b) {
         const Real ia = m_bodies[size_t(m_nodeSlot[size_t(a)])].invMass,
                    ib = m_bodies[size_t(m_nodeSlot[size_t(b)])].invMass;
