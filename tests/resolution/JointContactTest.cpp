@@ -1,6 +1,7 @@
 // JointContactTest.cpp - joints meeting contacts in whole scenes with collision geometry (World): a joined
-// pair's contacts are dropped unless setCollideConnected(true), and a hinged door stopped by its limit while
-// a ball hits it (the limit holds, the ball does not pass through the door).
+// pair's contacts are dropped unless setCollideConnected(true), a jointed pair landing on one end keeps its
+// joint together, and a hinged door stopped by its limit while a ball hits it (the limit holds, the ball does
+// not pass through the door).
 #include "SceneFixture.h"
 #include "iBallJoint.h"
 #include "iCollisionListener.h"
@@ -44,6 +45,38 @@ TEST(JointContact, AJoinedPairCollidesOnlyWhenAskedTo) {
             joint->getLocalAnchorB() * b->getDynamics().orientation + b->getDynamics().position;
         EXPECT_LT((anchorA - anchorB).length(), 1e-3f) << collide;
         joint->Delete();
+    }
+}
+
+// Two 0.4 m x 0.1 m x 0.1 m boxes of 2 kg end to end on a ball joint at the shared end, turned 0.3 rad about
+// z, dropped from 1 m onto the floor at the default settings: the one end lands first and is stopped (put
+// back at its touch by the continuous stage, or pushed out of the floor by the projection with that stage
+// off) while the other end comes on. The truth is a joint that holds: the anchors together at every step.
+// Measured over 2 s: 1.8 mm apart at worst with the continuous stage, 2.9 mm without (asserted: 5 mm).
+// Before the step closed the joints of what it moves alone (JointClosing.h): 4.4 cm and 2.7 cm.
+TEST(JointContact, AJointedPairLandingKeepsItsJointTogether) {
+    for (bool continuous : {true, false}) {
+        SceneFixture s(4);
+        settingsOf(s.scene)->setContinuousCollisionEnabled(continuous);
+        s.world->ground();
+        const Matrix turn = rotate(Vector(0, 0, 1), 0.3f);
+        const Vector joint(0, 1.2f, 0), along = Vector(0.2f, 0, 0) * turn;
+        iRigidBody* a = s.world->box(joint - along, Vector(0.2f, 0.05f, 0.05f), 2.0f, turn)->getRB();
+        iRigidBody* b = s.world->box(joint + along, Vector(0.2f, 0.05f, 0.05f), 2.0f, turn)->getRB();
+        iBallJoint* ball = CreateBallJoint(a, b, joint);
+        ASSERT_NE(ball, nullptr);
+        float worst = 0;
+        s.steps(120, [&] {
+            const Vector anchorA =
+                ball->getLocalAnchorA() * a->getDynamics().orientation + a->getDynamics().position;
+            const Vector anchorB =
+                ball->getLocalAnchorB() * b->getDynamics().orientation + b->getDynamics().position;
+            worst = std::max(worst, (anchorA - anchorB).length());
+        });
+        std::printf("[ measured ] jointed pair landing, continuous %s: anchors up to %.4f m apart\n",
+                    continuous ? "on" : "off", worst);
+        EXPECT_LT(worst, 0.005f) << (continuous ? "continuous on" : "continuous off");
+        ball->Delete();
     }
 }
 
