@@ -123,6 +123,7 @@ public:
     // the pose and the previous pose only when the body moved.)
     struct alignas(64) Entry {
         CollisionGeometry* g = nullptr;
+        iCollisionGeometry* self = nullptr; // g as the interface its contacts name (without a call through g)
         iRigidBody* body = nullptr;
         bool active = true; // gathered this call; an inactive one (no body, a pose not finite) is in no pair
         bool fixed = false, plane = false, moved = false; // fixed: resting and not moved since last call

@@ -314,6 +314,7 @@ void SimpleCollisionSpace::layOutEntries() {
             m_entries.emplace_back();
             Entry& e = m_entries.back();
             e.g = g;
+            e.self = g->asInterface();
             e.plane = g->isPlane();
             e.active = false;
             e.first = e.last = int(m_shapes.size());

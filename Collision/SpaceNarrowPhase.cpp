@@ -54,13 +54,14 @@ void SimpleCollisionSpace::emit(const Entry& a, const Entry& b, const gcol::Cont
             return;
         }
         const gcol::ContactPoint& p = m.points[i];
-        CollisionContact c;
+        // Written in place: a contact put together on the stack and copied was read back before its
+        // fields' stores had left (a stall on every contact).
+        CollisionContact& c = m_contacts.emplace_back();
         c.pos = p.pos;
         c.normal = p.normal;
         c.depth = p.depth;
-        c.g1 = a.g->asInterface();
-        c.g2 = b.g->asInterface();
-        m_contacts.push_back(c);
+        c.g1 = a.self;
+        c.g2 = b.self;
         m_contactGeoms.emplace_back(a.g, b.g);
         m_features.push_back((p.feature & 0xFFFu) | ((childPair & 0x3FFFFu) << 12) | tag);
     }
@@ -184,8 +185,9 @@ void SimpleCollisionSpace::testPair(const Entry& a, const Entry& b, float delta)
     }
     if (m_cut) ++m_droppedPairs; // cut off part way, perhaps entirely
     if (!hit || m_contacts.size() == before) return;
-    // One notice per geometry pair: the average contact position (the centre of the overlap area).
-    Notice n;
+    // One notice per geometry pair: the average contact position (the centre of the overlap area). Written
+    // in place, as emit writes its contacts.
+    Notice& n = m_notices.emplace_back();
     n.g1 = a.g;
     n.g2 = b.g;
     n.b1 = a.body;
@@ -197,5 +199,4 @@ void SimpleCollisionSpace::testPair(const Entry& a, const Entry& b, float delta)
     n.pos = sum / float(n.points);
     n.atPose = touchingNow;
     n.sensor = false;
-    m_notices.push_back(n);
 }
