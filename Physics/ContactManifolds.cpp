@@ -41,14 +41,45 @@ void ContactSolver::buildManifolds(const CollisionContact* contacts, size_t coun
     if (m_dormant.capacity() < m_last.size()) m_dormant.reserve(room); // last step's that rest, at most all
     FlatMap<PairKey, size_t, PairKeyHash>& current = m_current;
     current.clear();
+    m_lastNow.assign(m_last.size(), -1);
+    m_lastCursor = 0;
     m_maxDepthBefore = 0;
     constexpr size_t kNone = ~size_t(0);
     // A space lists a pair's contacts one after another: what holds for the pair is worked out at its first.
+    // What holds for each of its geometries (body, root, material, size, solver slot) is kept while the next
+    // pair shares it (a space lists a geometry's pairs together, mostly): each is read from the geometry and
+    // its body, lying elsewhere in memory, once for them all.
+    struct Side {
+        iCollisionGeometry* g = nullptr;
+        iRigidBody* rb = nullptr;
+        RBDynamics* root = nullptr;
+        bool fixed = true;
+        int index = -1; // its root's solver slot, once a manifold entered it
+        Real friction = 0, restitution = 0, radius = 0;
+    };
+    Side sideA, sideB;
+    auto sideOf = [&](iCollisionGeometry* g, Side& side) {
+        if (side.g == g) return;
+        side.g = g;
+        side.rb = g->getRigidBody();
+        side.root = side.rb ? side.rb->getDynamics().attachmentRoot() : nullptr;
+        side.fixed = !side.root || immovable(*side.root);
+        side.index = -1;
+        // A bodiless geometry has the default material of a body.
+        static const RBDynamics defaults;
+        const RBDynamics& material = side.rb ? side.rb->getDynamics() : defaults;
+        side.friction = material.friction;
+        side.restitution = material.restitution;
+        side.radius = g->getBoundingRadius();
+    };
+    auto indexOf = [&](Side& side) {
+        if (side.index < 0) side.index = bodyIndex(side.root, access);
+        return side.index;
+    };
     struct {
         const iCollisionGeometry *g1 = nullptr, *g2 = nullptr;
-        iRigidBody *rb1 = nullptr, *rb2 = nullptr;
-        RBDynamics *rootA = nullptr, *rootB = nullptr;
         bool skip = true;
+        int previous = -1;       // last step's manifold of the pair (m_last)
         size_t manifold = kNone; // its place in m_manifolds, once it has one
     } pair;
     for (size_t i = 0; contacts && i < count; ++i) {
@@ -57,41 +88,43 @@ void ContactSolver::buildManifolds(const CollisionContact* contacts, size_t coun
         if (c.g1 != pair.g1 || c.g2 != pair.g2) {
             pair.g1 = c.g1;
             pair.g2 = c.g2;
-            pair.rb1 = c.g1->getRigidBody();
-            pair.rb2 = c.g2->getRigidBody();
-            pair.rootA = pair.rb1 ? pair.rb1->getDynamics().attachmentRoot() : nullptr;
-            pair.rootB = pair.rb2 ? pair.rb2->getDynamics().attachmentRoot() : nullptr;
-            const bool fixedA = !pair.rootA || immovable(*pair.rootA),
-                       fixedB = !pair.rootB || immovable(*pair.rootB);
-            pair.skip = pair.rootA == pair.rootB || (fixedA && fixedB) ||
-                        joinedWithoutContact(pair.rootA, pair.rootB);
-            const size_t* known = pair.skip ? nullptr : current.find(PairKey{c.g1, c.g2});
-            pair.manifold = known ? *known : kNone;
+            sideOf(c.g1, sideA);
+            sideOf(c.g2, sideB);
+            pair.skip = sideA.root == sideB.root || (sideA.fixed && sideB.fixed) ||
+                        joinedWithoutContact(sideA.root, sideB.root);
+            // Its manifold, if its contacts came earlier in the list too: a pair that had one last step is
+            // known by that one (no table), a new pair by the table of new pairs.
+            pair.previous = pair.skip ? -1 : previousManifold(c.g1, c.g2);
+            if (pair.previous >= 0) {
+                const int now = m_lastNow[size_t(pair.previous)];
+                pair.manifold = now >= 0 ? size_t(now) : kNone;
+            } else {
+                const size_t* known = pair.skip ? nullptr : current.find(PairKey{c.g1, c.g2});
+                pair.manifold = known ? *known : kNone;
+            }
         }
         if (pair.skip) continue;
-        iRigidBody *rb1 = pair.rb1, *rb2 = pair.rb2;
-        RBDynamics *rootA = pair.rootA, *rootB = pair.rootB;
         Vec3 n = toEigen(c.normal);
         if (!n.allFinite() || n.squaredNorm() < 0.5f || !std::isfinite(c.depth)) continue;
         n.normalize();
 
         if (pair.manifold == kNone) {
             pair.manifold = m_manifolds.size();
-            current.emplace(PairKey{c.g1, c.g2}, pair.manifold);
+            if (pair.previous >= 0)
+                m_lastNow[size_t(pair.previous)] = int(pair.manifold);
+            else
+                current.emplace(PairKey{c.g1, c.g2}, pair.manifold);
             Manifold& m = m_manifolds.emplace_back();
             m.g1 = c.g1;
             m.g2 = c.g2;
-            m.rootA = rootA;
-            m.rootB = rootB;
-            m.a = bodyIndex(rootA, access);
-            m.b = bodyIndex(rootB, access);
-            // A bodiless geometry has the default material of a body.
-            static const RBDynamics defaults;
-            const RBDynamics& matA = rb1 ? rb1->getDynamics() : defaults;
-            const RBDynamics& matB = rb2 ? rb2->getDynamics() : defaults;
-            m.friction = combine(m_settings.friction, matA.friction, matB.friction);
-            m.restitution = combine(m_settings.restitution, matA.restitution, matB.restitution);
-            m.size = std::fmin(c.g1->getBoundingRadius(), c.g2->getBoundingRadius());
+            m.rootA = sideA.root;
+            m.rootB = sideB.root;
+            m.a = indexOf(sideA);
+            m.b = indexOf(sideB);
+            m.friction = combine(m_settings.friction, sideA.friction, sideB.friction);
+            m.restitution = combine(m_settings.restitution, sideA.restitution, sideB.restitution);
+            m.size = std::fmin(sideA.radius, sideB.radius);
+            m.previous = pair.previous;
         }
         Manifold& m = m_manifolds[pair.manifold];
         ManifoldPoint p;
@@ -114,7 +147,20 @@ void ContactSolver::buildManifolds(const CollisionContact* contacts, size_t coun
             if (shallowest->depth < p.depth) *shallowest = p;
         }
     }
-    keepPoints(access, current);
+    keepPoints(access);
+}
+
+int ContactSolver::previousManifold(const iCollisionGeometry* g1, const iCollisionGeometry* g2) {
+    // A space lists its pairs in much the same order step after step: last step's manifold of this pair is
+    // most often the one after the last one found, known without the table.
+    size_t i = m_lastCursor;
+    if (i >= m_last.size() || m_last[i].g1 != g1 || m_last[i].g2 != g2) {
+        const size_t* known = m_lastIndex.find(PairKey{g1, g2});
+        if (!known) return -1;
+        i = *known;
+    }
+    m_lastCursor = i + 1;
+    return int(i);
 }
 
 // A collision detector reports only touching points, so a resting box that rocks by a hair loses the
@@ -123,8 +169,7 @@ void ContactSolver::buildManifolds(const CollisionContact* contacts, size_t coun
 // touching keeps last step's points that came apart by less than keepDistance, each with its impulses. Such
 // a point is speculative: it holds only once its gap closes (see solveContacts), so it never pulls and never
 // stops a body short of touching.
-void ContactSolver::keepPoints(const SolverBodyAccess& access,
-                               const FlatMap<PairKey, size_t, PairKeyHash>& reported) {
+void ContactSolver::keepPoints(const SolverBodyAccess& access) {
     if (m_settings.keepDistance <= 0.0f) return;
     const Real keep = m_settings.keepDistance, match2 = m_settings.matchDistance * m_settings.matchDistance;
     // Appends to m the points of old that m lacks and that are apart by less than keep.
@@ -150,15 +195,14 @@ void ContactSolver::keepPoints(const SolverBodyAccess& access,
             m.points[m.count++] = p;
         }
     };
-    for (Manifold& m : m_manifolds) {
-        if (const size_t* last = m_lastIndex.find(PairKey{m.g1, m.g2})) keepFrom(m_last[*last], m);
-    }
+    for (Manifold& m : m_manifolds)
+        if (m.previous >= 0) keepFrom(m_last[size_t(m.previous)], m);
     // A pair the detector no longer reports at all (lifted by a hair) keeps its points for one step; a pair
     // at rest (an island asleep: the detector skips it) keeps its manifold unsolved until it wakes.
     m_dormant.clear();
-    for (const Manifold& old : m_last) {
-        if (reported.find(PairKey{old.g1, old.g2}) || !access.alive(old.rootA) || !access.alive(old.rootB))
-            continue;
+    for (size_t i = 0; i < m_last.size(); ++i) {
+        const Manifold& old = m_last[i];
+        if (m_lastNow[i] >= 0 || !access.alive(old.rootA) || !access.alive(old.rootB)) continue;
         if (access.resting(old.rootA) && access.resting(old.rootB)) {
             if (old.age == 0 || old.dormant) {
                 m_dormant.push_back(old);
@@ -172,6 +216,7 @@ void ContactSolver::keepPoints(const SolverBodyAccess& access,
         m.count = 0;
         m.a = bodyIndex(old.rootA, access);
         m.b = bodyIndex(old.rootB, access);
+        m.previous = int(i);
         keepFrom(old, m);
         if (m.count > 0) m_manifolds.push_back(m);
     }
@@ -180,9 +225,8 @@ void ContactSolver::keepPoints(const SolverBodyAccess& access,
 void ContactSolver::matchPreviousImpulses() {
     const Real best0 = m_settings.matchDistance * m_settings.matchDistance;
     for (Manifold& m : m_manifolds) {
-        const size_t* last = m_settings.warmStart ? m_lastIndex.find(PairKey{m.g1, m.g2}) : nullptr;
-        if (!last) continue;
-        const Manifold& old = m_last[*last];
+        if (!m_settings.warmStart || m.previous < 0) continue;
+        const Manifold& old = m_last[size_t(m.previous)];
         for (int i = 0; i < m.count; ++i) {
             ManifoldPoint& p = m.points[i];
             // The old point at the same place on body a.

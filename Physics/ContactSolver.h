@@ -173,7 +173,9 @@ private:
     // ContactManifolds.cpp
     int bodyIndex(RBDynamics* root, const SolverBodyAccess& access);
     void buildManifolds(const CollisionContact* contacts, size_t count, const SolverBodyAccess& access);
-    void keepPoints(const SolverBodyAccess& access, const FlatMap<PairKey, size_t, PairKeyHash>& reported);
+    // Last step's manifold of a pair (an index into m_last; -1: none).
+    int previousManifold(const iCollisionGeometry* g1, const iCollisionGeometry* g2);
+    void keepPoints(const SolverBodyAccess& access);
     void matchPreviousImpulses();
     void storeImpulses();
     // JointStage.cpp
@@ -219,7 +221,9 @@ private:
     std::vector<Manifold> m_last;      // last step's, in solving order (for warm starting and keeping)
     std::vector<Manifold> m_dormant;   // this step's pairs at rest (both asleep or fixed), carried unsolved
     FlatMap<PairKey, size_t, PairKeyHash> m_lastIndex; // into m_last
-    FlatMap<PairKey, size_t, PairKeyHash> m_current;   // into m_manifolds, while they are built
+    std::vector<int> m_lastNow; // per m_last: this step's manifold of its pair (-1: the pair is not reported)
+    size_t m_lastCursor = 0;    // where previousManifold looks first
+    FlatMap<PairKey, size_t, PairKeyHash> m_current; // a new pair's manifold, while they are built
     float m_maxDepthBefore = 0, m_maxDepthAfter = 0;
     Real m_dt = 0;                                // the step being solved
     Real m_h = 0;                                 // its sub-step

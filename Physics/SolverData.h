@@ -74,6 +74,7 @@ struct Manifold {
     int count = 0;
     ManifoldPoint points[4];
     int block = -1, lane = 0; // where the solver's wide rows hold it during a solve (ContactBlocks.h)
+    int previous = -1;        // last step's manifold of the pair (ContactSolver's m_last), while collecting
 };
 
 // A point's row along its normal, as the contact blocks hold it (ContactBlocks::normalRow): r x n on each
