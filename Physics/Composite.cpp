@@ -28,13 +28,20 @@ void addPart(Composite& out, RigidBody* body, RBDynamics& d, const Vec3& offset,
              float lengthUnit, bool& locked) {
     if (body && !body->generators().empty()) out.hasGenerators = true;
     locked = locked || (body && body->isRotationLocked());
-    Vec3 force = toEigen(d.force + d.temporalForce);
-    if (d.mass < INFINITE_MASS) force += d.mass * toEigen(d.acceleration);
-    out.parts.push_back(
-        {body, &d, offset, rotation, force, toEigen(d.torque + d.temporalTorque),
-         out.drag && d.dragCoefficient > 0.0f
-             ? 0.5f * AIR_DENSITY / (lengthUnit * lengthUnit * lengthUnit) * dragArea(d) * d.dragCoefficient
-             : 0.0f});
+    // Written in place: a part put together on the stack and copied was read back before its fields'
+    // stores had left (a stall on every body, every step).
+    CompositePart& part = out.parts.emplace_back();
+    part.body = body;
+    part.dyn = &d;
+    part.offset = offset;
+    part.relRot = rotation;
+    part.constForce = toEigen(d.force + d.temporalForce);
+    if (d.mass < INFINITE_MASS) part.constForce += d.mass * toEigen(d.acceleration);
+    part.constTorque = toEigen(d.torque + d.temporalTorque);
+    part.dragK =
+        out.drag && d.dragCoefficient > 0.0f
+            ? 0.5f * AIR_DENSITY / (lengthUnit * lengthUnit * lengthUnit) * dragArea(d) * d.dragCoefficient
+            : 0.0f;
 }
 
 struct Placed {
