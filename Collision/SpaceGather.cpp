@@ -161,8 +161,8 @@ bool SimpleCollisionSpace::gatherEntry(Entry& e, bool continuous) {
     const RBDynamics* d = body ? &body->getDynamics() : nullptr;
     const bool rootKnown = m_linksUnchanged && c.rootIsSelf && c.dynamics == d;
     c.dynamics = d;
-    // Its root: itself when it had no parent at the last call and no attachment changed since (the links lie
-    // at the far end of RBDynamics, a cache line read for nothing).
+    // Its root: itself when it had no parent at the last call and no attachment changed since (known without
+    // reading the links).
     const RBDynamics* root = d && !rootKnown ? d->attachmentRoot() : d;
     c.rootIsSelf = d && root == d;
     const unsigned version = g->shapeVersion();

@@ -180,7 +180,7 @@ struct RBDynamics {
     }
     // A count of the attachments and detachments of every body so far (in any thread): while it stays the
     // same, every body's attachmentRoot() is what it was, so a cache of them holds (the collision space
-    // reads a body's root without touching the links at the end of this struct).
+    // knows a body's root without reading its links).
     static unsigned long long attachmentEpoch();
     // The seed: the mass of the body at the root of the attachment chain (its own mass when unattached).
     float getMass() const;
@@ -208,6 +208,11 @@ struct RBDynamics {
     RBDynamics* nextAttached() const { return m_nextSibling; }
 
 private:
+    // The attachment links first, beside the state above: every pass of a step asks each body for its root
+    // (attachmentRoot, attachedTo), and here that reads a cache line the pass reads anyway.
+    RBDynamics* m_parent = nullptr;
+    RBDynamics* m_firstChild = nullptr;
+    RBDynamics* m_nextSibling = nullptr;
     Matrix m_inertia;        // body-local, about the COM
     Matrix m_inverseInertia; // its inverse
     // Inertia from shape and mass. Not copied by operator=: the geometries bound to this body (m_shapeParts).
@@ -223,9 +228,6 @@ private:
     float m_derivedMass = 0.0f;                // mass and com of the last derivation
     Vector m_derivedCom;                       //
     Matrix m_derivedInertia, m_derivedInverse; // what it wrote (a difference is a write through a reference)
-    RBDynamics* m_parent = nullptr;
-    RBDynamics* m_firstChild = nullptr;
-    RBDynamics* m_nextSibling = nullptr;
 
     void unlinkFromParent();
     void combineShapeParts();

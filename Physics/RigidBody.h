@@ -125,7 +125,13 @@ public:
     // The step's closing of joints (JointClosing.h): held where it was put; its joints listed; queued.
     bool closingHeld = false, closingWalked = false, closingQueued = false;
     bool pendingRemoval = false; // remove() during a step, or kill(): skipped now, removed when the step ends
-    int sceneSlot = -1;          // its place in its scene's list of bodies (PhysicsScene::bodies)
+
+private:
+    // Beside pendingRemoval: every pass of a step over the bodies reads both first (one cache line a body).
+    bool m_dying = false;
+
+public:
+    int sceneSlot = -1; // its place in its scene's list of bodies (PhysicsScene::bodies)
     // The world pose (COM, rotation) at the start of the current step.
     const Vector& previousPosition() const { return m_prevPosition; }
     const Quat& previousRotation() const { return m_prevRotation; }
@@ -246,7 +252,6 @@ private:
     std::vector<iForceGenerator*> m_generators;
     PhysicsScene* m_scene = nullptr;
     iPhysicsFrame* m_owner = nullptr;
-    bool m_dying = false;
     bool m_alive = true;
     void* m_userPointer = nullptr;
     unsigned long long m_frameRound = 0;
