@@ -5,6 +5,7 @@
 
 #include "Integrators.h"
 #include "MathEigen.h"
+#include "Prefetch.h"
 #include "RigidBody.h"
 
 namespace physics {
@@ -87,13 +88,30 @@ void SceneBodyAccess::storeVelocity(const SolverBody& b) const {
     m.body->own.momentum = momentum;
 }
 
+namespace {
+// RigidBody's first fields, up to solverSlot: what the solver's writes and acceptWrites touch of the body
+// itself (RigidBody.h lays them out first).
+constexpr size_t kHotRigidBodyBytes = 320;
+} // namespace
+
+void SceneBodyAccess::prefetch(const SolverBody& b) const {
+    if (b.invMass == 0.0f) return;
+    // storeVelocity and storePose write the dynamics' first lines (position to angular momentum) and the
+    // body's own state at its start (RigidBody's first fields); acceptWrites reads and writes the same.
+    prefetchLines(m_mass[size_t(b.slot)].body, kHotRigidBodyBytes);
+    SolverBodyAccess::prefetch(b);
+}
+
 void SceneBodyAccess::storePose(const SolverBody& b) const {
     SolverBodyAccess::storePose(b);
     if (b.invMass != 0.0f) m_mass[size_t(b.slot)].body->writePosition(b.origin);
 }
 
 void SceneBodyAccess::acceptWrites(const std::vector<SolverBody>& bodies, JointClosing& closing) const {
-    for (const SolverBody& b : bodies) {
+    constexpr size_t kAhead = 4;
+    for (size_t i = 0; i < bodies.size(); ++i) {
+        if (i + kAhead < bodies.size()) prefetch(bodies[i + kAhead]);
+        const SolverBody& b = bodies[i];
         if (!b.root) continue;
         if (b.invMass == 0.0f) {
             if (RigidBody* entered = bodyOf(b.root)) entered->solverSlot = -1; // entered, never completed

@@ -38,6 +38,7 @@ public:
                    const Vec3& dv, const Vec3& dw) const;
     void storeVelocity(const SolverBody& b) const override;
     void storePose(const SolverBody& b) const override; // and the body's own Real pose (RigidBody.h)
+    void prefetch(const SolverBody& b) const override;
     bool alive(const RBDynamics* root) const override;
     bool resting(const RBDynamics* root) const override;
     // Records the solver's writes as the simulator's own, so the next step does not take them for edits;

@@ -1,6 +1,7 @@
 // ContactSolver.cpp - the sub-stepped solve: soft contacts, Coulomb friction, warm starting, restitution.
 #include "ContactSolver.h"
 #include "Joint.h"
+#include "Prefetch.h"
 #include "SolverRows.h"
 
 #include "MathEigen.h"
@@ -95,6 +96,10 @@ void SolverBodyAccess::storeVelocity(const SolverBody& b) const {
     b.root->angularMomentum = toVector(r * tensor(b.root->getInertiaTensor()) * r.transpose() * b.w);
 }
 
+void SolverBodyAccess::prefetch(const SolverBody& b) const {
+    if (movable(b)) prefetchLines(b.root, sizeof(RBDynamics) / 2); // position to angular momentum
+}
+
 void SolverBodyAccess::storePose(const SolverBody& b) const {
     b.root->position = toVector(b.origin);
     b.root->orientation = toOrientation(b.rotation);
@@ -172,7 +177,10 @@ void ContactSolver::solve(Real dt, const SolverBodyAccess& access) {
     findBounces();
     projectDeepOverlaps();
     applyRestitution();
-    for (const SolverBody& b : m_bodies) {
+    constexpr size_t kAhead = 4;
+    for (size_t i = 0; i < m_bodies.size(); ++i) {
+        if (i + kAhead < m_bodies.size()) access.prefetch(m_bodies[i + kAhead]);
+        const SolverBody& b = m_bodies[i];
         access.storeVelocity(b);
         if (movable(b)) access.storePose(b);
     }

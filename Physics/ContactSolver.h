@@ -106,6 +106,9 @@ public:
     virtual void storeVelocity(const SolverBody& b) const;
     // Writes back the frame (origin, rotation) the sub-steps moved a movable body to.
     virtual void storePose(const SolverBody& b) const;
+    // Asks for what storeVelocity and storePose of b will write to be loaded (a hint: the bodies lie apart in
+    // memory, in no order the caches can guess; a few bodies ahead, they arrive while others are written).
+    virtual void prefetch(const SolverBody& b) const;
     // Whether a body of last step is still there to be touched (nullptr: the static world).
     virtual bool alive(const RBDynamics* root) const { return !root; }
     // Whether a body rests outside the solve, asleep or fixed (nullptr, the static world, does): a pair of
