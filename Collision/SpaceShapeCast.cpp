@@ -139,12 +139,17 @@ size_t SimpleCollisionSpace::sweepBodies(BodySweep* sweeps, size_t count) {
     std::vector<int>& perSweep = m_castOrder; // first used as a count per sweep
     perSweep.assign(count + 1, 0);
     for (CollisionGeometry* g : m_members) {
-        CastGeometry c;
+        // Written in place (a copy from the stack was read back before its stores had left), taken back when
+        // the geometry takes no part.
+        CastGeometry& c = m_cast.emplace_back();
         c.g = g;
         c.sweep = -1;
         c.posed = false;
         if (!c.g->body()) {
-            if (!c.g->isPlane()) continue;
+            if (!c.g->isPlane()) {
+                m_cast.pop_back();
+                continue;
+            }
         } else {
             const RBDynamics& d = c.g->body()->getDynamics();
             const void* root = d.attachmentRoot();
@@ -152,7 +157,10 @@ size_t SimpleCollisionSpace::sweepBodies(BodySweep* sweeps, size_t count) {
             if (slot.first == root) {
                 const size_t sweep = size_t(slot.second);
                 if (root != &d || c.g->isPlane() || mayPassThrough(m_sweepMotion[sweep], *c.g, d)) {
-                    if (!c.g->currentPose(c.origin, c.rotation)) continue;
+                    if (!c.g->currentPose(c.origin, c.rotation)) {
+                        m_cast.pop_back();
+                        continue;
+                    }
                     c.posed = true;
                     m_mayPass[sweep] = 1;
                 }
@@ -160,7 +168,6 @@ size_t SimpleCollisionSpace::sweepBodies(BodySweep* sweeps, size_t count) {
                 ++perSweep[size_t(c.sweep)];
             }
         }
-        m_cast.push_back(c);
     }
     if (std::find(m_mayPass.begin(), m_mayPass.end(), 1) == m_mayPass.end()) return 0; // nothing fast
     // Each sweep's geometry as one range of m_castOrder (a counting sort, in space order within a sweep).

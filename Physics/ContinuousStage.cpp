@@ -30,14 +30,13 @@ size_t ContinuousStage::run(const std::vector<RigidBody*>& bodies, iShapeCast* c
         // An unmoved body (a resting one the solver held still) needs no sweep: a shorter batch.
         if (d.position == b->previousPosition() && b->rotation.coeffs() == b->previousRotation().coeffs())
             continue;
-        BodySweep s;
+        BodySweep& s = m_sweeps.emplace_back(); // in place (a copy from the stack stalled on its stores)
         s.body = b;
         // A projection out of an overlap is a correction, not part of the path: the path starts from the
         // start pose moved by it (swept from the start itself, a ball a paddle had overtaken was cast back
         // into the paddle).
         s.startPosition = b->previousPosition() + b->projectedBy;
         s.startOrientation = toOrientation(b->previousRotation());
-        m_sweeps.push_back(s);
         m_owners.push_back(b);
     }
     if (m_sweeps.empty() || cast->sweepBodies(m_sweeps.data(), m_sweeps.size()) == 0) return 0;
