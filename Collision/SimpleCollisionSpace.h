@@ -123,7 +123,6 @@ public:
     // the pose and the previous pose only when the body moved.)
     struct alignas(64) Entry {
         CollisionGeometry* g = nullptr;
-        iCollisionGeometry* self = nullptr; // g as the interface its contacts name (without a call through g)
         iRigidBody* body = nullptr;
         bool active = true; // gathered this call; an inactive one (no body, a pose not finite) is in no pair
         bool fixed = false, plane = false, moved = false; // fixed: resting and not moved since last call
@@ -300,6 +299,9 @@ private:
     // Kept between calls: the entries, their shapes (each entry's from first, room for cache.capacity), which
     // entries' boxes or activity changed this call, and whether they were laid out anew (all changed).
     std::vector<Entry> m_entries, m_oldEntries;
+    // Per entry, its geometry as the interface a contact names (emit): kept apart from the entries, whose
+    // first lines are all that a call where nothing moved reads of them.
+    std::vector<iCollisionGeometry*> m_interfaces;
     std::vector<gcol::WorldShape> m_shapes, m_oldShapes;
     std::vector<int> m_changed;
     bool m_relaid = true;

@@ -314,7 +314,6 @@ void SimpleCollisionSpace::layOutEntries() {
             m_entries.emplace_back();
             Entry& e = m_entries.back();
             e.g = g;
-            e.self = g->asInterface();
             e.plane = g->isPlane();
             e.active = false;
             e.first = e.last = int(m_shapes.size());
@@ -322,6 +321,8 @@ void SimpleCollisionSpace::layOutEntries() {
         }
         m_shapes.resize(size_t(m_entries.back().first + m_entries.back().cache.capacity));
     }
+    m_interfaces.resize(m_entries.size());
+    for (size_t i = 0; i < m_entries.size(); ++i) m_interfaces[i] = m_entries[i].g->asInterface();
     m_layoutDirty = false;
 }
 

@@ -48,6 +48,9 @@ bool singleSphere(const SimpleCollisionSpace::Entry& e, const std::vector<gcol::
 
 void SimpleCollisionSpace::emit(const Entry& a, const Entry& b, const gcol::ContactManifold& m,
                                 unsigned childPair, unsigned tag) {
+    // a and b are this call's entries: their interfaces are kept by index.
+    iCollisionGeometry* const ga = m_interfaces[size_t(&a - m_entries.data())];
+    iCollisionGeometry* const gb = m_interfaces[size_t(&b - m_entries.data())];
     for (int i = 0; i < m.count; ++i) {
         if (full()) { // the budget: the pair's remaining contacts are dropped
             m_cut = true;
@@ -60,8 +63,8 @@ void SimpleCollisionSpace::emit(const Entry& a, const Entry& b, const gcol::Cont
         c.pos = p.pos;
         c.normal = p.normal;
         c.depth = p.depth;
-        c.g1 = a.self;
-        c.g2 = b.self;
+        c.g1 = ga;
+        c.g2 = gb;
         m_contactGeoms.emplace_back(a.g, b.g);
         m_features.push_back((p.feature & 0xFFFu) | ((childPair & 0x3FFFFu) << 12) | tag);
     }
