@@ -6,6 +6,8 @@
 // the 1,000-box figure measured first in the same run. The issue's target: at 10,000 within 1.5x of the cost
 // at 1,000; main() prints whether it holds, and where the growth is: each phase of the step's wall time per
 // body-step (the scene's own profile, iPhysicsSceneProfile.h) at each count, with its ratio to 1,000 boxes.
+// BM_ScalingInterleaved times the two counts of the target in turn, in the same minutes (the figure to judge
+// the target by on a shared machine: three runs of the counts one after the other gave 1.64x, 1.84x, 1.95x).
 #include "../PinnedBenchmarkMain.h"
 #include "MathDeclarations.h"
 #include "RBDynamics.h"
@@ -26,6 +28,7 @@
 #include <map>
 #include <random>
 #include <string>
+#include <vector>
 
 #include <time.h>
 
@@ -80,16 +83,65 @@ void buildScalingPile(World& world, int boxes) {
     }
 }
 
+// A settled pile of `boxes` awake boxes in a scene of its own, stepped at 60 Hz.
+struct Pile {
+    explicit Pile(int boxes) : scene(CreatePhysicsScene(nullptr)) {
+        settingsOf(scene)->setSleepingEnabled(false);
+        scene->update(0);
+        world = new World(scene);
+        buildScalingPile(*world, boxes);
+        for (int i = 0; i < kSettleSteps; ++i) advance();
+    }
+    ~Pile() {
+        delete world;
+        scene->Delete();
+    }
+    Pile(const Pile&) = delete;
+    Pile& operator=(const Pile&) = delete;
+    void advance() { scene->update(int(std::ceil(++step * 1000.0 / 60.0))); }
+    // CPU ns per awake body-step over n steps.
+    double timedSteps(int n) {
+        const long long before = statsOf(scene)->getStepCount();
+        const double c0 = threadCpuSeconds();
+        for (int i = 0; i < n; ++i) advance();
+        const double cpu = threadCpuSeconds() - c0;
+        const double bodySteps =
+            double(statsOf(scene)->getStepCount() - before) * double(statsOf(scene)->getAwakeBodyCount());
+        return bodySteps > 0 ? 1e9 * cpu / bodySteps : 0.0;
+    }
+    iPhysicsScene* scene;
+    World* world = nullptr;
+    int step = 0;
+};
+
+// The issue's ratio with both counts timed in turn (1,000 boxes for 100 steps, then 10,000 for 10, six
+// rounds): a machine that slows down for a while slows both alike, where the counts timed one after the other
+// minutes apart can each meet a different machine. A round's first step of the 1,000-box pile (one in a
+// hundred) starts from a cache the other pile filled; the 10,000-box pile fits no cache either way.
+std::vector<double>& interleavedRatios() {
+    static std::vector<double> ratios;
+    return ratios;
+}
+void BM_ScalingInterleaved(benchmark::State& state) {
+    Pile small(kReference), big(10000);
+    double smallNs = 0, bigNs = 0;
+    for (auto _ : state) {
+        const double s = small.timedSteps(100), b = big.timedSteps(10);
+        smallNs += s;
+        bigNs += b;
+        interleavedRatios().push_back(s > 0 ? b / s : 0.0);
+    }
+    const double rounds = double(state.iterations());
+    state.counters["ns_per_body_step_1000"] = smallNs / rounds;
+    state.counters["ns_per_body_step_10000"] = bigNs / rounds;
+    state.counters["ratio"] = smallNs > 0 ? bigNs / smallNs : 0.0;
+}
+
 void BM_StepScaling(benchmark::State& state) {
     const int boxes = int(state.range(0));
-    iPhysicsScene* scene = CreatePhysicsScene(nullptr);
-    settingsOf(scene)->setSleepingEnabled(false);
-    scene->update(0);
-    World* world = new World(scene);
-    buildScalingPile(*world, boxes);
-    int step = 0;
-    auto advance = [&] { scene->update(int(std::ceil(++step * 1000.0 / 60.0))); };
-    for (int i = 0; i < kSettleSteps; ++i) advance();
+    Pile pile(boxes);
+    iPhysicsScene* scene = pile.scene;
+    auto advance = [&] { pile.advance(); };
     const long long before = statsOf(scene)->getStepCount();
     double wall = 0, cpu = 0;
     std::array<double, kPhaseCount> phases{};
@@ -118,8 +170,6 @@ void BM_StepScaling(benchmark::State& state) {
     state.counters["wall_ns_per_body_step"] = bodySteps > 0 ? 1e9 * wall / bodySteps : 0.0;
     auto ref = perBodyNs().find(kReference);
     state.counters["ratio_to_1000"] = ref != perBodyNs().end() && ref->second > 0 ? ns / ref->second : 0.0;
-    delete world;
-    scene->Delete();
 }
 
 // Timed steps: enough for a steady figure, fewer for the big piles.
@@ -135,15 +185,31 @@ void registerCount(int boxes) {
 
 } // namespace
 
+// The interleaved benchmark's rounds: the median ratio and its range.
+void printInterleaved() {
+    std::vector<double> ratios = interleavedRatios();
+    if (ratios.empty()) return;
+    std::sort(ratios.begin(), ratios.end());
+    std::printf(
+        "timed in turn, %zu rounds: 10,000 boxes at x%.2f the 1,000-box cost (median; rounds x%.2f to "
+        "x%.2f): %s\n",
+        ratios.size(), ratios[ratios.size() / 2], ratios.front(), ratios.back(),
+        ratios[ratios.size() / 2] <= 1.5 ? "holds" : "does not hold");
+}
+
 int main(int argc, char** argv) {
     // Every count on the same core (PinnedBenchmarkMain.h), the 1,000-box reference first, so that every
     // later count has its ratio in the same run.
     const int cpu = stayOnThisCpuAndSayWhich();
     for (int boxes : {kReference, 100, 300, 3000, 10000}) registerCount(boxes);
+    benchmark::RegisterBenchmark("BM_ScalingInterleaved", BM_ScalingInterleaved)
+        ->Iterations(6)
+        ->Unit(benchmark::kMillisecond);
     benchmark::Initialize(&argc, argv);
     if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
     benchmark::RunSpecifiedBenchmarks();
     benchmark::Shutdown();
+    printInterleaved();
     const auto& figures = perBodyNs();
     auto ref = figures.find(kReference);
     if (ref == figures.end() || ref->second <= 0) return 0;
@@ -169,7 +235,8 @@ int main(int argc, char** argv) {
     }
     auto big = figures.find(10000);
     if (big != figures.end())
-        std::printf("issue 12 target (10,000 within 1.5x of 1,000): %s (x%.2f)\n",
+        std::printf("issue 12 target (10,000 within 1.5x of 1,000): %s (x%.2f, the counts timed one after "
+                    "the other)\n",
                     big->second / ref->second <= 1.5 ? "holds" : "does not hold", big->second / ref->second);
     return 0;
 }
