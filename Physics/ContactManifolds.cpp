@@ -92,15 +92,16 @@ void ContactSolver::buildManifolds(const CollisionContact* contacts, size_t coun
             sideOf(c.g2, sideB);
             pair.skip = sideA.root == sideB.root || (sideA.fixed && sideB.fixed) ||
                         joinedWithoutContact(sideA.root, sideB.root);
+            if (pair.skip) continue;
             // Its manifold, if its contacts came earlier in the list too: a pair that had one last step is
             // known by that one (no table), a new pair by the table of new pairs.
-            pair.previous = pair.skip ? -1 : previousManifold(c.g1, c.g2);
+            pair.previous = previousManifold(c.g1, c.g2);
+            pair.manifold = kNone;
             if (pair.previous >= 0) {
                 const int now = m_lastNow[size_t(pair.previous)];
-                pair.manifold = now >= 0 ? size_t(now) : kNone;
-            } else {
-                const size_t* known = pair.skip ? nullptr : current.find(PairKey{c.g1, c.g2});
-                pair.manifold = known ? *known : kNone;
+                if (now >= 0) pair.manifold = size_t(now);
+            } else if (const size_t* known = current.find(PairKey{c.g1, c.g2})) {
+                pair.manifold = *known;
             }
         }
         if (pair.skip) continue;

@@ -5,7 +5,6 @@
 
 #include "Integrators.h"
 #include "MathEigen.h"
-#include "Prefetch.h"
 #include "RigidBody.h"
 
 namespace physics {
@@ -88,17 +87,11 @@ void SceneBodyAccess::storeVelocity(const SolverBody& b) const {
     m.body->own.momentum = momentum;
 }
 
-namespace {
-// RigidBody's first fields, up to solverSlot: what the solver's writes and acceptWrites touch of the body
-// itself (RigidBody.h lays them out first).
-constexpr size_t kHotRigidBodyBytes = 320;
-} // namespace
-
 void SceneBodyAccess::prefetch(const SolverBody& b) const {
     if (b.invMass == 0.0f) return;
-    // storeVelocity and storePose write the dynamics' first lines (position to angular momentum) and the
-    // body's own state at its start (RigidBody's first fields); acceptWrites reads and writes the same.
-    prefetchLines(m_mass[size_t(b.slot)].body, kHotRigidBodyBytes);
+    // storeVelocity and storePose write the dynamics' state and the body's own; acceptWrites reads and writes
+    // the same.
+    m_mass[size_t(b.slot)].body->prefetchSolverState();
     SolverBodyAccess::prefetch(b);
 }
 

@@ -97,7 +97,10 @@ void SolverBodyAccess::storeVelocity(const SolverBody& b) const {
 }
 
 void SolverBodyAccess::prefetch(const SolverBody& b) const {
-    if (movable(b)) prefetchLines(b.root, sizeof(RBDynamics) / 2); // position to angular momentum
+    if (!movable(b)) return;
+    // What storeVelocity and storePose write: position to angular momentum (RBDynamics' state fields).
+    const char* from = reinterpret_cast<const char*>(&b.root->position);
+    prefetchLines(from, size_t(reinterpret_cast<const char*>(&b.root->angularMomentum + 1) - from));
 }
 
 void SolverBodyAccess::storePose(const SolverBody& b) const {

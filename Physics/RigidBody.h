@@ -7,6 +7,7 @@
 #pragma once
 
 #include "MathBridge.h"
+#include "Prefetch.h"
 #include "RBDynamics.h"
 #include "iLifetime.h"
 #include "iRigidBody.h"
@@ -207,6 +208,12 @@ public:
     bool hasComposite = false;
     // Its index among the contact solver's bodies while the solver moves it through this step (-1: not).
     int solverSlot = -1;
+    // Asks for the lines the solver's write-back and the scene's acceptance of it touch here: the fields
+    // from projectedBy to solverSlot, declared together for that (ContactResolution.cpp).
+    void prefetchSolverState() const {
+        const char* from = reinterpret_cast<const char*>(&projectedBy);
+        prefetchLines(from, size_t(reinterpret_cast<const char*>(&solverSlot + 1) - from));
+    }
     // The joints that hold this body (Joint.h keeps the list): they let go when it is killed or deleted.
     std::vector<Joint*> joints;
     Real compositeMass = 0;
