@@ -20,7 +20,9 @@
 
 class iRigidBody;
 
-class CollisionGeometry : public iCollisionFilter {
+// On a cache line of its own: what a space call reads of every geometry (the filter, the body, the space
+// state's first fields: 56 bytes) is then one line.
+class alignas(64) CollisionGeometry : public iCollisionFilter {
 public:
     // Sets the space that geometries created from now on join (nullptr: none).
     static void setGlobalCollisionSpace(iCollisionSpace* cs) { setDefaultCollisionSpace(cs); }

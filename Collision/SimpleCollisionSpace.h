@@ -138,6 +138,7 @@ public:
         gcol::Aabb box;        // swept over the motion when moved
         // What the shapes and boxes were made from (the space's; a broadphase ignores it).
         struct Cache {
+            const RBDynamics* dynamics = nullptr; // its body's at the last call (to fetch ahead; rootIsSelf)
             bool valid = false; // shapes, tight, minDim and bound hold for origin, rotation, version, body
             bool raw = false;   // the body had no parent: its pose came from rawInputs
             bool prevIsPose = false;  // SpaceState::previous* were last written from origin and rotation
@@ -149,11 +150,10 @@ public:
             bool rootIsSelf = false; // dynamics had no parent at the last call
             unsigned shapeVersion = 0, sizedVersion = 0;
             float bound = 0.0f, selfAngle = 0.0f; // bounding radius; rotationAngle(rotation, rotation)
-            gcol::PoseInputs rawInputs; // (in the entry's first three cache lines: a call where nothing moved
-                                        // reads no more of it)
-            gcol::Aabb tight;           // its shapes' box at the pose
-            int capacity = 0;           // shapes m_shapes holds for it from first on
-            const RBDynamics* dynamics = nullptr; // its body's at the last call (to fetch ahead; rootIsSelf)
+            // A call where nothing moved reads the entry up to here: its first three cache lines.
+            gcol::PoseInputs rawInputs;
+            gcol::Aabb tight; // its shapes' box at the pose
+            int capacity = 0; // shapes m_shapes holds for it from first on
         } cache;
         int first = 0, last = 0;   // its shapes in m_shapes
         Vector origin, prevOrigin; // the previous pose: set (and read) only in a call with sampling on

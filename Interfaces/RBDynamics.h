@@ -59,30 +59,16 @@ ShapeMass combineShapeMass(const ShapeMass* parts, size_t n);
 
 struct RBDynamics {
     // --- properties (seed names and meanings) ---
-    Vector position;      // current position of the centre of mass (m)
-    Vector velocity;      // current velocity of the centre of mass (m/s)
-    Vector lastVelocity;  // velocity before the last step: helps detect velocity spikes
-    Vector acceleration;  // additive acceleration of the COM (m/s^2), on top of gravity
-    Vector force;         // constant force on the COM (N), applied every step
-    Vector temporalForce; // force applied for the next step only, then reset to zero
-    // Linear acceleration = gravity (PHYS_Falling only) + acceleration + (force + temporalForce) / mass +
-    // drag / mass.
+    // The pose first, with what a collision space and every pass of a step read of each body (mass, type,
+    // sleeping, teleports, the attachment links): 128 bytes, two or three cache lines, where the seed's
+    // order of declaration spread them over five.
+    Vector position;                // current position of the centre of mass (m)
+    Vector com;                     // centre-of-mass offset from the body frame's origin, in body-local axes
+    Matrix orientation = Matrix(1); // rotation (body local -> world), orthonormal, never scaled
     // mass: kg, > 0. INFINITE_MASS makes the body kinematic: forces, torques, gravity, drag and impulses do
     // not change its motion, but it still moves and turns with the velocity and angular velocity you give it
     // (a composite with an infinite part turns about its root's centre of mass).
     float mass = 1.0f;
-    // Quadratic drag F = -1/2 rho Cd A |v| v through the COM, with air density rho = 1.2 kg/m^3 and the
-    // reference area A = pi r^2 of the sphere with the body's volume (its collision geometry's solid; a body
-    // with none is the sphere of radius 1 its inertia assumes: A = pi), so drag follows the body's size and
-    // this is a true Cd (a sphere's 0.47). Terminal speed: sqrt(2 m g / (rho Cd A)). >= 0.
-    float dragCoefficient = 0.0f;
-    // Angular drag (1/s): the spin's angular momentum decays as e^(-angularDrag t), a torque -angularDrag L
-    // taken exactly over each step (stable at any value). 0: none; >= 0. On an attachment chain the root's
-    // value acts on the whole composite.
-    float angularDrag = 0.0f;
-    float restitution = 0.5f; // 1 superball (keeps all energy), 0 clay (keeps none); outside [0, 1]: refused
-    float friction = 0.25f;   // a contact's coefficient is the sum of both bodies' values (seed rule); >= 0
-    Vector com;               // centre-of-mass offset from the body frame's origin, in body-local axes
     PhysicsType physicsType = PHYS_Falling;
     // Set by the simulator while the body sleeps (at rest, neither integrated nor solved); a game reads it.
     // Give the body a velocity, a force or a torque, or move it, and it wakes. A collision space skips pairs
@@ -96,11 +82,38 @@ struct RBDynamics {
     // operator= (it is the body's history, not a property).
     unsigned teleports = 0;
     void markTeleported() { ++teleports; }
-    Matrix orientation = Matrix(1); // rotation (body local -> world), orthonormal, never scaled
-    Vector angularVelocity;         // rad/s, world axes
-    Vector angularMomentum;         // about the COM, world axes (kg m^2/s)
-    Vector torque;                  // constant torque about the COM (N m), world axes, applied every step
-    Vector temporalTorque;          // torque for the next step only, then reset to zero
+
+private:
+    // The attachment links beside the pose: every pass of a step and every space call asks each body for its
+    // root (attachmentRoot, attachedTo).
+    RBDynamics* m_parent = nullptr;
+    RBDynamics* m_firstChild = nullptr;
+    RBDynamics* m_nextSibling = nullptr;
+
+public:
+    // The motion, then what drives it.
+    Vector velocity;        // current velocity of the centre of mass (m/s)
+    Vector angularVelocity; // rad/s, world axes
+    Vector angularMomentum; // about the COM, world axes (kg m^2/s)
+    Vector lastVelocity;    // velocity before the last step: helps detect velocity spikes
+    Vector acceleration;    // additive acceleration of the COM (m/s^2), on top of gravity
+    Vector force;           // constant force on the COM (N), applied every step
+    Vector temporalForce;   // force applied for the next step only, then reset to zero
+    // Linear acceleration = gravity (PHYS_Falling only) + acceleration + (force + temporalForce) / mass +
+    // drag / mass.
+    // Quadratic drag F = -1/2 rho Cd A |v| v through the COM, with air density rho = 1.2 kg/m^3 and the
+    // reference area A = pi r^2 of the sphere with the body's volume (its collision geometry's solid; a body
+    // with none is the sphere of radius 1 its inertia assumes: A = pi), so drag follows the body's size and
+    // this is a true Cd (a sphere's 0.47). Terminal speed: sqrt(2 m g / (rho Cd A)). >= 0.
+    float dragCoefficient = 0.0f;
+    // Angular drag (1/s): the spin's angular momentum decays as e^(-angularDrag t), a torque -angularDrag L
+    // taken exactly over each step (stable at any value). 0: none; >= 0. On an attachment chain the root's
+    // value acts on the whole composite.
+    float angularDrag = 0.0f;
+    float restitution = 0.5f; // 1 superball (keeps all energy), 0 clay (keeps none); outside [0, 1]: refused
+    float friction = 0.25f;   // a contact's coefficient is the sum of both bodies' values (seed rule); >= 0
+    Vector torque;            // constant torque about the COM (N m), world axes, applied every step
+    Vector temporalTorque;    // torque for the next step only, then reset to zero
     // dL/dt = torque + temporalTorque; w = I_world^-1 L with I_world^-1 = R^T I^-1 R (row vectors), so the
     // gyroscopic term w x (I w) comes with it.
     // Angular velocity and momentum are two views of one state (L = I_world w). Write either: before each
@@ -208,11 +221,6 @@ struct RBDynamics {
     RBDynamics* nextAttached() const { return m_nextSibling; }
 
 private:
-    // The attachment links first, beside the state above: every pass of a step asks each body for its root
-    // (attachmentRoot, attachedTo), and here that reads a cache line the pass reads anyway.
-    RBDynamics* m_parent = nullptr;
-    RBDynamics* m_firstChild = nullptr;
-    RBDynamics* m_nextSibling = nullptr;
     Matrix m_inertia;        // body-local, about the COM
     Matrix m_inverseInertia; // its inverse
     // Inertia from shape and mass. Not copied by operator=: the geometries bound to this body (m_shapeParts).
