@@ -67,7 +67,7 @@ template <class V> void scatterBlock(const ContactBlock& block, const BlockVeloc
 // deeper than its contacts' give, and ordered by height they let the 210-box pyramid's top drift 15 cm.
 int ContactBlocks::openBlock(int from) {
     int j = from;
-    while (j < int(m_blocks.size()) && m_used[size_t(j)] == kLanes) j = m_nextOpen[size_t(j)];
+    while (j < int(m_count) && m_used[size_t(j)] == kLanes) j = m_nextOpen[size_t(j)];
     for (int k = from; k < j;) { // shorten the path walked (union-find's path compression)
         const int next = m_nextOpen[size_t(k)];
         m_nextOpen[size_t(k)] = j;
@@ -106,8 +106,7 @@ void ContactBlocks::fill(int j, int lane, Manifold& m, int index, const std::vec
 
 void ContactBlocks::pack(std::vector<Manifold>& manifolds, const std::vector<SolverBody>& bodies) {
     const int zero = int(bodies.size()), scratch = zero + 1;
-    m_blocks.clear();
-    m_anchors.clear();
+    m_count = 0;
     m_used.clear();
     m_nextOpen.clear();
     // Kept with room to spare, so that a warm scene whose packing varies from step to step does not allocate.
@@ -124,15 +123,8 @@ void ContactBlocks::pack(std::vector<Manifold>& manifolds, const std::vector<Sol
         const int after =
             std::max(moveA ? m_lastBlock[size_t(m.a)] : -1, moveB ? m_lastBlock[size_t(m.b)] : -1);
         const int j = openBlock(after + 1);
-        if (j == int(m_blocks.size())) {
-            m_blocks.emplace_back();
-            m_anchors.emplace_back();
-            ContactBlock& block = m_blocks.back();
-            for (int lane = 0; lane < kLanes; ++lane) {
-                block.manifold[lane] = -1;
-                block.read[0][lane] = block.read[1][lane] = zero;
-                block.write[0][lane] = block.write[1][lane] = scratch;
-            }
+        if (j == int(m_count)) {
+            openNew(zero, scratch);
             m_used.push_back(0);
             m_nextOpen.push_back(j + 1);
         }
@@ -145,6 +137,35 @@ void ContactBlocks::pack(std::vector<Manifold>& manifolds, const std::vector<Sol
     m_velocity[size_t(zero)] = Velocity{};
     m_pose.resize(bodies.size() + 1);
     m_pose[size_t(zero)] = Pose{{0, 0, 0, 1}, {0, 0, 0, 0}};
+}
+
+// The next block, empty: a block a earlier step used is reused rather than built (and zeroed: 3.7 KB) again,
+// and only what is read before it is written is reset. A lane's rows, approach and gap are written for
+// every lane up to the block's points before anything reads them (prepare, the first sweep's gaps), its
+// anchors and impulses by fill(); points beyond the block's count and a frictionless block's tangent rows
+// are never read. Left over from before are only the anchors of a lane's absent points, whose rows are zero.
+void ContactBlocks::openNew(int zero, int scratch) {
+    if (m_count == m_blocks.size()) {
+        m_blocks.emplace_back();
+        m_anchors.emplace_back();
+    } else {
+        ContactBlock& block = m_blocks[m_count];
+        block.points = 0;
+        block.friction = false;
+        for (Lanes* x : {&block.invMassA, &block.invMassB, &block.frictionCoefficient, &block.biasRate,
+                         &block.massScale, &block.impulseScale})
+            *x = Lanes();
+        for (BlockPoint& q : block.p) {
+            for (Lanes& x : q.impulse) x = Lanes();
+            q.pushed = q.maxNormal = Lanes();
+        }
+    }
+    ContactBlock& block = m_blocks[m_count++];
+    for (int lane = 0; lane < kLanes; ++lane) {
+        block.manifold[lane] = -1;
+        block.read[0][lane] = block.read[1][lane] = zero;
+        block.write[0][lane] = block.write[1][lane] = scratch;
+    }
 }
 
 void ContactBlocks::unpack(std::vector<Manifold>& manifolds) const {
@@ -234,7 +255,8 @@ void ContactBlocks::addForces(const std::vector<SolverBody>& bodies, Real share)
 
 void ContactBlocks::warmStart(bool firstSubstep, Real impactSpeed) {
     const Lanes impact(impactSpeed), zero(0);
-    for (ContactBlock& block : m_blocks) {
+    for (size_t j = 0; j < m_count; ++j) {
+        ContactBlock& block = m_blocks[j];
         Velocity* u = m_velocity.data();
         BlockVelocity vel = gatherBlock(block, u);
         for (int i = 0; i < block.points; ++i) {
@@ -257,7 +279,7 @@ void ContactBlocks::solve(const std::vector<SolverBody>& bodies, const Sweep& sw
     if (sweep.measureGaps) loadPoses(bodies);
     const Lanes zero(0), one(1), h(sweep.h), touch(-sweep.touchOverlap), impact(-sweep.restitutionThreshold),
         maxPush(-sweep.maxPushSpeed);
-    for (size_t j = 0; j < m_blocks.size(); ++j) {
+    for (size_t j = 0; j < m_count; ++j) {
         ContactBlock& block = m_blocks[j];
         // Positions do not change within a sweep, nor between a relax sweep and the next sub-step's velocity
         // sweep and push out: the gaps are measured once for all three.

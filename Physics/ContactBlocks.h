@@ -114,12 +114,13 @@ public:
     Real gap(const Manifold& m, int point) const { return at(m).p[point].gap.lane(m.lane); }
     // The impulses back into the manifolds.
     void unpack(std::vector<Manifold>& manifolds) const;
-    size_t blockCount() const { return m_blocks.size(); }
+    size_t blockCount() const { return m_count; }
 
 private:
     const ContactBlock& at(const Manifold& m) const { return m_blocks[size_t(m.block)]; }
     ContactBlock& at(const Manifold& m) { return m_blocks[size_t(m.block)]; }
-    int openBlock(int from); // the first block from this one with a free lane (or the end)
+    int openBlock(int from);             // the first block from this one with a free lane (or the end)
+    void openNew(int zero, int scratch); // the next block, every lane empty
     void fill(int block, int lane, Manifold& m, int index, const std::vector<SolverBody>& bodies);
     void loadPoses(const std::vector<SolverBody>& bodies);
     static Vec3 vec(const Real* x) { return Vec3(x[0], x[1], x[2]); }
@@ -134,11 +135,12 @@ private:
     struct alignas(16) Pose {
         Real q[4], origin[4]; // rotation (x, y, z, w) and origin; the static world's is the identity
     };
-    std::vector<ContactBlock> m_blocks;
+    std::vector<ContactBlock> m_blocks;  // the first m_count this step's; the rest kept for later steps
     std::vector<BlockAnchors> m_anchors; // per block
-    std::vector<Velocity> m_velocity;    // per solver body, then a zero slot and a scratch slot
-    std::vector<Velocity> m_saved;       // m_velocity as saveVelocities() found it
-    std::vector<Pose> m_pose;            // per solver body, then the zero slot's identity
+    size_t m_count = 0;
+    std::vector<Velocity> m_velocity; // per solver body, then a zero slot and a scratch slot
+    std::vector<Velocity> m_saved;    // m_velocity as saveVelocities() found it
+    std::vector<Pose> m_pose;         // per solver body, then the zero slot's identity
     // Packing: each body's last block so far, each block's lanes used, and a skip list to a block with a free
     // lane.
     std::vector<int> m_lastBlock, m_used, m_nextOpen;

@@ -44,7 +44,8 @@ void ContactBlocks::prepare(std::vector<Manifold>& manifolds, const std::vector<
     static const Mat3 zeroMatrix = Mat3::Zero();
     static const Vec3 zeroVector = Vec3::Zero();
     const Lanes zero(0), one(1);
-    for (ContactBlock& block : m_blocks) {
+    for (size_t j = 0; j < m_count; ++j) {
+        ContactBlock& block = m_blocks[j];
         const Mat3 *ia[kLanes], *ib[kLanes];
         const Vec3 *ca[kLanes], *cb[kLanes], *va[kLanes], *wa[kLanes], *vb[kLanes], *wb[kLanes];
         for (int l = 0; l < kLanes; ++l) {
