@@ -139,11 +139,11 @@ void ContactBlocks::pack(std::vector<Manifold>& manifolds, const std::vector<Sol
     m_pose[size_t(zero)] = Pose{{0, 0, 0, 1}, {0, 0, 0, 0}};
 }
 
-// The next block, empty: a block a earlier step used is reused rather than built (and zeroed: 3.7 KB) again,
-// and only what is read before it is written is reset. A lane's rows, approach and gap are written for
-// every lane up to the block's points before anything reads them (prepare, the first sweep's gaps), its
-// anchors and impulses by fill(); points beyond the block's count and a frictionless block's tangent rows
-// are never read. Left over from before are only the anchors of a lane's absent points, whose rows are zero.
+// The next block, empty. A block an earlier step used is reused rather than built (and zeroed: 3.7 KB)
+// again; only what may be read before this step writes it is reset: the lanes' masses and soft settings,
+// the impulses and the anchors (fill() sets them for its lane's points only). The rows, approach and gap are
+// written for every lane up to the block's points before anything reads them (prepare, the first sweep's
+// gaps); points beyond them and a frictionless block's tangent rows are never read.
 void ContactBlocks::openNew(int zero, int scratch) {
     if (m_count == m_blocks.size()) {
         m_blocks.emplace_back();
@@ -159,6 +159,7 @@ void ContactBlocks::openNew(int zero, int scratch) {
             for (Lanes& x : q.impulse) x = Lanes();
             q.pushed = q.maxNormal = Lanes();
         }
+        m_anchors[m_count] = BlockAnchors();
     }
     ContactBlock& block = m_blocks[m_count++];
     for (int lane = 0; lane < kLanes; ++lane) {

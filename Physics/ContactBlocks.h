@@ -137,10 +137,10 @@ private:
     };
     std::vector<ContactBlock> m_blocks;  // the first m_count this step's; the rest kept for later steps
     std::vector<BlockAnchors> m_anchors; // per block
-    size_t m_count = 0;
-    std::vector<Velocity> m_velocity; // per solver body, then a zero slot and a scratch slot
-    std::vector<Velocity> m_saved;    // m_velocity as saveVelocities() found it
-    std::vector<Pose> m_pose;         // per solver body, then the zero slot's identity
+    size_t m_count = 0;                  // blocks in use this step
+    std::vector<Velocity> m_velocity;    // per solver body, then a zero slot and a scratch slot
+    std::vector<Velocity> m_saved;       // m_velocity as saveVelocities() found it
+    std::vector<Pose> m_pose;            // per solver body, then the zero slot's identity
     // Packing: each body's last block so far, each block's lanes used, and a skip list to a block with a free
     // lane.
     std::vector<int> m_lastBlock, m_used, m_nextOpen;
