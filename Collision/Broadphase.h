@@ -33,14 +33,19 @@ public:
 
     virtual PairList findPairs(const std::vector<SimpleCollisionSpace::Entry>& entries,
                                const std::vector<int>* changed) = 0;
-    // Geometries of all (the space's members) that may meet box at their current pose, or the segment origin
-    // + t * dir (0 <= t <= maxT), in the order of all. entries are the space's from its last call (a
-    // geometry's SpaceState::entry names its own, if that entry's g is the geometry).
-    virtual void overlapCandidates(const std::vector<CollisionGeometry*>& all,
-                                   const std::vector<SimpleCollisionSpace::Entry>& entries,
-                                   const gcol::Aabb& box, std::vector<CollisionGeometry*>& out) = 0;
-    virtual void rayCandidates(const std::vector<CollisionGeometry*>& all,
-                               const std::vector<SimpleCollisionSpace::Entry>& entries, const Vector& origin,
+    // Brings what queries search up to date with the geometries of all (the space's members) at their current
+    // poses. entries are the space's from its last call (a geometry's SpaceState::entry names its own, if
+    // that entry's g is the geometry). Nothing to do for a broadphase whose queries consider every geometry.
+    virtual void syncQueries(const std::vector<CollisionGeometry*>& all,
+                             const std::vector<SimpleCollisionSpace::Entry>& entries) {
+        (void)all;
+        (void)entries;
+    }
+    // Geometries of all that may meet box, or the segment origin + t * dir (0 <= t <= maxT), at the poses of
+    // the last syncQueries (all unchanged since), in the order of all.
+    virtual void overlapCandidates(const std::vector<CollisionGeometry*>& all, const gcol::Aabb& box,
+                                   std::vector<CollisionGeometry*>& out) = 0;
+    virtual void rayCandidates(const std::vector<CollisionGeometry*>& all, const Vector& origin,
                                const Vector& dir, float maxT, std::vector<CollisionGeometry*>& out) = 0;
     // g is leaving the space (its space state still names its proxy).
     virtual void forget(CollisionGeometry* g) = 0;

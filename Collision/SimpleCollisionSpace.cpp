@@ -53,6 +53,7 @@ bool SimpleCollisionSpace::add(iCollisionGeometry* o) {
     m_members.push_back(g);
     ++m_membership;
     m_layoutDirty = true;
+    querySyncLost();
     return true;
 }
 
@@ -77,6 +78,7 @@ void SimpleCollisionSpace::removeNow(CollisionGeometry* g) {
     wakeSleeper(g->body(), nullptr); // asleep, a body that lost its shape would hang where it rested
     ++m_membership;
     m_layoutDirty = true;
+    querySyncLost();
     CollisionGeometry::SpaceState& st = g->spaceState();
     m_geometry.erase(st.listed);
     m_members[size_t(st.member)] = nullptr;
@@ -141,6 +143,7 @@ void SimpleCollisionSpace::populateContactList(float delta) {
     }
     m_populating = true;
     ++m_call;
+    querySyncLost(); // the broadphase now holds this call's boxes
     m_droppedPairs = 0;
     m_contacts.clear();
     m_features.clear();
@@ -185,6 +188,7 @@ size_t SimpleCollisionSpace::findCandidatePairs() {
     settleRemovals();
     if (m_notifying || m_populating) return 0;
     ++m_call;
+    querySyncLost();
     gatherEntries(false);
     const Broadphase::PairList pairs = m_broadphase->findPairs(m_entries, m_relaid ? nullptr : &m_changed);
     m_pairs = pairs.first;

@@ -84,6 +84,9 @@ public:
     size_t overlapBox(const Vector& centre, const Matrix& orientation, const Vector& halfExtents,
                       std::vector<iCollisionGeometry*>& out) override;
     size_t overlapAABB(const Vector& min, const Vector& max, std::vector<iCollisionGeometry*>& out) override;
+    // SpaceQueryBatch.cpp
+    void beginQueries() override;
+    void endQueries() override;
     void holdEvents(bool hold) override { m_holdEvents = hold; }
     // SpaceSnapshot.cpp
     iSnapshot* takeSnapshot() const override;
@@ -234,6 +237,23 @@ private:
     static void onBodyDestroyed(const iRigidBody* dying, void* self);
     void settleDeadBodies(); // the pairs of bodies that died since the last call marked gone
     bool queryShapes(CollisionGeometry* g, std::vector<gcol::WorldShape>& out); // (a member: no cast back)
+    // Query batches (SpaceQueryBatch.cpp): every query starts with prepareQuery (removals settled, the
+    // broadphase synced with the current poses unless this batch synced it already); whatever changes what
+    // the broadphase holds outside a query (membership, a call) says so with querySyncLost().
+    void prepareQuery();
+    void querySyncLost() { m_queriesSynced = false; }
+    bool batchMoved() const; // some geometry's pose or shapes differ from those the batch began with
+    struct BatchPose {
+        unsigned long long order; // the geometry's join order (never reused: one that left is never matched)
+        const iRigidBody* body;
+        unsigned shapeVersion;
+        bool posed; // its pose was finite
+        Vector origin;
+        Matrix rotation = Matrix(1);
+    };
+    std::vector<BatchPose> m_batchPoses; // per member at beginQueries(), in the members' (join) order
+    int m_batchDepth = 0;                // beginQueries() not yet ended
+    bool m_queriesSynced = false;        // inside a batch: the broadphase holds every member at its pose
     // SpaceShapeCast.cpp (the cast) and SpaceCastObstacles.cpp (what a sweep may meet)
     static constexpr int kUnusableSweep = -2; // CastGeometry::sweep of a geometry whose pose is not finite
     struct CastGeometry {

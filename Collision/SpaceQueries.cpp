@@ -21,7 +21,7 @@ bool SimpleCollisionSpace::queryShapes(CollisionGeometry* g, std::vector<gcol::W
 
 bool SimpleCollisionSpace::rayCast(const Vector& origin, const Vector& direction, float maxDistance,
                                    RayHit& hit) {
-    settleRemovals();
+    prepareQuery();
     float len = direction.length();
     if (!origin.isFinite() || !direction.isFinite() || !(len > 0.0f) || std::isnan(maxDistance)) {
         error(L"iCollisionSpace::rayCast: origin and direction must be finite, direction non-zero");
@@ -32,7 +32,7 @@ bool SimpleCollisionSpace::rayCast(const Vector& origin, const Vector& direction
     float best = maxDistance;
     bool found = false;
     std::vector<gcol::WorldShape>& shapes = m_scratchA;
-    m_broadphase->rayCandidates(m_members, m_entries, origin, dir, maxDistance, m_candidates);
+    m_broadphase->rayCandidates(m_members, origin, dir, maxDistance, m_candidates);
     for (CollisionGeometry* g : m_candidates) {
         if (!queryShapes(g, shapes)) continue;
         iCollisionGeometry* ig = g->asInterface();
@@ -74,7 +74,7 @@ size_t overlapWith(SimpleCollisionSpace& space, const std::vector<CollisionGeome
 
 size_t SimpleCollisionSpace::overlapSphere(const Vector& centre, float radius,
                                            std::vector<iCollisionGeometry*>& out) {
-    settleRemovals();
+    prepareQuery();
     if (!centre.isFinite() || !(std::isfinite(radius) && radius >= 0.0f)) {
         error(L"iCollisionSpace::overlapSphere: centre and radius must be finite, radius >= 0");
         out.clear();
@@ -86,13 +86,13 @@ size_t SimpleCollisionSpace::overlapSphere(const Vector& centre, float radius,
     q.sphere.radius = radius;
     gcol::Aabb box;
     gcol::shapeAabb(q, box);
-    m_broadphase->overlapCandidates(m_members, m_entries, box, m_candidates);
+    m_broadphase->overlapCandidates(m_members, box, m_candidates);
     return overlapWith(*this, m_candidates, q, m_scratchA, &SimpleCollisionSpace::queryShapes, out);
 }
 
 size_t SimpleCollisionSpace::overlapBox(const Vector& centre, const Matrix& orientation,
                                         const Vector& halfExtents, std::vector<iCollisionGeometry*>& out) {
-    settleRemovals();
+    prepareQuery();
     if (!centre.isFinite() || !isRotation(orientation, 1e-3f) || !halfExtents.isFinite() ||
         halfExtents.x < 0 || halfExtents.y < 0 || halfExtents.z < 0) {
         error(L"iCollisionSpace::overlapBox: needs a finite centre, a rotation and half extents >= 0");
@@ -108,7 +108,7 @@ size_t SimpleCollisionSpace::overlapBox(const Vector& centre, const Matrix& orie
     q.box.halfExtents = halfExtents;
     gcol::Aabb box;
     gcol::shapeAabb(q, box);
-    m_broadphase->overlapCandidates(m_members, m_entries, box, m_candidates);
+    m_broadphase->overlapCandidates(m_members, box, m_candidates);
     return overlapWith(*this, m_candidates, q, m_scratchA, &SimpleCollisionSpace::queryShapes, out);
 }
 

@@ -141,14 +141,12 @@ void SweepAndPrune::sweep() {
     }
 }
 
-void SweepAndPrune::overlapCandidates(const std::vector<CollisionGeometry*>& all,
-                                      const std::vector<SimpleCollisionSpace::Entry>&, const gcol::Aabb&,
+void SweepAndPrune::overlapCandidates(const std::vector<CollisionGeometry*>& all, const gcol::Aabb&,
                                       std::vector<CollisionGeometry*>& out) {
     out.assign(all.begin(), all.end());
 }
 
-void SweepAndPrune::rayCandidates(const std::vector<CollisionGeometry*>& all,
-                                  const std::vector<SimpleCollisionSpace::Entry>&, const Vector&,
-                                  const Vector&, float, std::vector<CollisionGeometry*>& out) {
+void SweepAndPrune::rayCandidates(const std::vector<CollisionGeometry*>& all, const Vector&, const Vector&,
+                                  float, std::vector<CollisionGeometry*>& out) {
     out.assign(all.begin(), all.end());
 }

@@ -15,12 +15,10 @@ class SweepAndPrune final : public Broadphase {
 public:
     PairList findPairs(const std::vector<SimpleCollisionSpace::Entry>& entries,
                        const std::vector<int>* changed) override;
-    void overlapCandidates(const std::vector<CollisionGeometry*>& all,
-                           const std::vector<SimpleCollisionSpace::Entry>& entries, const gcol::Aabb& box,
+    void overlapCandidates(const std::vector<CollisionGeometry*>& all, const gcol::Aabb& box,
                            std::vector<CollisionGeometry*>& out) override;
-    void rayCandidates(const std::vector<CollisionGeometry*>& all,
-                       const std::vector<SimpleCollisionSpace::Entry>& entries, const Vector& origin,
-                       const Vector& dir, float maxT, std::vector<CollisionGeometry*>& out) override;
+    void rayCandidates(const std::vector<CollisionGeometry*>& all, const Vector& origin, const Vector& dir,
+                       float maxT, std::vector<CollisionGeometry*>& out) override;
     void forget(CollisionGeometry*) override {}
 
 private:

@@ -326,8 +326,8 @@ bool TreeBroadphase::stillInside(const CollisionGeometry* g,
     return c.valid && c.shapeVersion == version && c.origin == o && c.rotation == r;
 }
 
-void TreeBroadphase::syncForQuery(const std::vector<CollisionGeometry*>& all,
-                                  const std::vector<SimpleCollisionSpace::Entry>& entries) {
+void TreeBroadphase::syncQueries(const std::vector<CollisionGeometry*>& all,
+                                 const std::vector<SimpleCollisionSpace::Entry>& entries) {
     m_queryPlanes.clear();
     for (CollisionGeometry* g : all) {
         if (g->isPlane()) {
@@ -379,21 +379,16 @@ void TreeBroadphase::gatherCandidates(std::vector<CollisionGeometry*>& out) {
     });
 }
 
-void TreeBroadphase::overlapCandidates(const std::vector<CollisionGeometry*>& all,
-                                       const std::vector<SimpleCollisionSpace::Entry>& entries,
-                                       const gcol::Aabb& box, std::vector<CollisionGeometry*>& out) {
-    syncForQuery(all, entries);
+void TreeBroadphase::overlapCandidates(const std::vector<CollisionGeometry*>&, const gcol::Aabb& box,
+                                       std::vector<CollisionGeometry*>& out) {
     m_hits.clear();
     ++m_treeQueries;
     m_tree.query(box, [this](int p) { m_hits.push_back(p); });
     gatherCandidates(out);
 }
 
-void TreeBroadphase::rayCandidates(const std::vector<CollisionGeometry*>& all,
-                                   const std::vector<SimpleCollisionSpace::Entry>& entries,
-                                   const Vector& origin, const Vector& dir, float maxT,
-                                   std::vector<CollisionGeometry*>& out) {
-    syncForQuery(all, entries);
+void TreeBroadphase::rayCandidates(const std::vector<CollisionGeometry*>&, const Vector& origin,
+                                   const Vector& dir, float maxT, std::vector<CollisionGeometry*>& out) {
     m_hits.clear();
     ++m_treeQueries;
     m_tree.rayCast(origin, dir, maxT, [this](int p) { m_hits.push_back(p); });

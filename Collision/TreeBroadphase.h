@@ -12,8 +12,9 @@
 // new pair joins when a moved proxy finds it, a pair leaves when one of its proxies moved and the fat boxes
 // no longer overlap, or when a geometry leaves the space. A call where nothing moved makes no tree query and
 // no merge: it lists the pairs whose exact boxes overlap, O(pairs). Pairs are listed planes first, then by
-// join order. Queries first bring the proxies up to date with the bodies' current poses (a pose compare per
-// geometry; shapes rebuilt only for one that moved), then ask the tree.
+// join order. Queries first bring the proxies up to date with the bodies' current poses (syncQueries: a pose
+// compare per geometry, shapes rebuilt only for one that moved; once for a batch of queries), then ask the
+// tree.
 //
 // A call's work follows what changed: the space names the entries whose boxes changed, and only their
 // proxies are looked at (every entry's only when the space laid its entries out anew, or queries moved
@@ -34,12 +35,14 @@ public:
 
     PairList findPairs(const std::vector<SimpleCollisionSpace::Entry>& entries,
                        const std::vector<int>* changed) override;
-    void overlapCandidates(const std::vector<CollisionGeometry*>& all,
-                           const std::vector<SimpleCollisionSpace::Entry>& entries, const gcol::Aabb& box,
+    // Every proxy brought to its geometry's current pose: a pose compare a geometry, shapes made anew only
+    // for one that moved.
+    void syncQueries(const std::vector<CollisionGeometry*>& all,
+                     const std::vector<SimpleCollisionSpace::Entry>& entries) override;
+    void overlapCandidates(const std::vector<CollisionGeometry*>& all, const gcol::Aabb& box,
                            std::vector<CollisionGeometry*>& out) override;
-    void rayCandidates(const std::vector<CollisionGeometry*>& all,
-                       const std::vector<SimpleCollisionSpace::Entry>& entries, const Vector& origin,
-                       const Vector& dir, float maxT, std::vector<CollisionGeometry*>& out) override;
+    void rayCandidates(const std::vector<CollisionGeometry*>& all, const Vector& origin, const Vector& dir,
+                       float maxT, std::vector<CollisionGeometry*>& out) override;
     void forget(CollisionGeometry* g) override;
     // Fat boxes made from now on get the new margin (the ones made already are still conservative).
     void setLengthUnit(float unitsPerMetre) override { m_margin = kMargin * unitsPerMetre; }
@@ -105,8 +108,6 @@ private:
         unsigned shapeVersion = 0;
         bool valid = false, raw = false;
     };
-    void syncForQuery(const std::vector<CollisionGeometry*>& all,
-                      const std::vector<SimpleCollisionSpace::Entry>& entries);
     // g's proxy's fat box holds g's shapes at (o, r): it held its entry's box, and the entry is at that pose.
     bool stillInside(const CollisionGeometry* g, const std::vector<SimpleCollisionSpace::Entry>& entries,
                      const Vector& o, const Matrix& r) const;

@@ -2,7 +2,7 @@
 set(GUARDIAN_COLLISION_SOURCES
   CollideSphereSphere.cpp CollideSphereBox.cpp CollideBoxBox.cpp CollidePlane.cpp Dispatch.cpp Queries.cpp
   CollisionGeometry.cpp CSphere.cpp COBB.cpp CPlane.cpp CCompound.cpp
-  SimpleCollisionSpace.cpp SpaceNarrowPhase.cpp SpaceListeners.cpp SpaceEvents.cpp SpaceContactEvents.cpp SpaceQueries.cpp
+  SimpleCollisionSpace.cpp SpaceNarrowPhase.cpp SpaceListeners.cpp SpaceEvents.cpp SpaceContactEvents.cpp SpaceQueries.cpp SpaceQueryBatch.cpp
   SeparationBound.cpp SpaceShapeCast.cpp SpaceCastObstacles.cpp SpaceSnapshot.cpp DynamicTree.cpp SweepAndPrune.cpp TreeBroadphase.cpp
   SpaceDebugDraw.cpp SpaceWake.cpp SpaceGather.cpp)
 set(GUARDIAN_COLLISION_HEADERS

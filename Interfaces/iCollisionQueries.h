@@ -4,6 +4,11 @@
 // does, reached with queriesOf(space). Queries look at every geometry of the space at its body's current
 // pose; like populateContactList they ignore geometry without a body (except a bodiless plane) and geometry
 // whose body's pose is not finite.
+//
+// A space cannot tell that a body moved without reading it (a game writes RBDynamics directly), so each query
+// first looks at every geometry's body: O(N) a query even where a tree answers in O(log N). A batch
+// (beginQueries ... endQueries, or a QueryBatch in scope) does that once for all the queries in it: the game
+// promises that nothing moves inside it.
 #pragma once
 
 #include <vector>
@@ -35,8 +40,37 @@ public:
     virtual size_t overlapAABB(const Vector& min, const Vector& max,
                                std::vector<iCollisionGeometry*>& out) = 0;
 
+    // A batch of queries. Between beginQueries() and endQueries() the game promises that no body or geometry
+    // of the space moves or is reshaped; the space then looks at every geometry once, at the first query, and
+    // each query after it costs what its candidates cost (the octree space: O(log N + hits) instead of O(N)).
+    // Queries answer as outside a batch while the promise holds. Geometry may join or leave inside a batch
+    // (the next query looks at every geometry again). endQueries() checks the promise, O(N) once: a geometry
+    // whose pose or shapes changed since beginQueries() is reported with error(), as the queries after the
+    // change may have looked for it where it was. Batches nest (the outermost one counts); an endQueries()
+    // without a beginQueries() is refused with error(). A space without batches (a game's own) answers every
+    // query on its own: these do nothing.
+    virtual void beginQueries() {}
+    virtual void endQueries() {}
+
 protected:
     ~iCollisionQueries() = default; // part of a space: Delete() the space
+};
+
+// A batch of queries for the lifetime of this object (beginQueries() now, endQueries() when it goes out of
+// scope); q may be nullptr. End it before the space is deleted.
+class QueryBatch {
+public:
+    explicit QueryBatch(iCollisionQueries* q) : m_queries(q) {
+        if (m_queries) m_queries->beginQueries();
+    }
+    ~QueryBatch() {
+        if (m_queries) m_queries->endQueries();
+    }
+    QueryBatch(const QueryBatch&) = delete;
+    QueryBatch& operator=(const QueryBatch&) = delete;
+
+private:
+    iCollisionQueries* m_queries;
 };
 
 // The queries of a space that answers them (the simple space); nullptr for one that does not. A cross-cast

@@ -24,8 +24,16 @@ public:
     void restore(int) override {}
     std::vector<iCollisionListener*>& getListeners() override { return m_listeners; }
     iFrame* getFrame() override { return nullptr; }
-    RBDynamics& getDynamics() override { return m_dynamics; }
-    const RBDynamics& getDynamics() const override { return m_dynamics; }
+    RBDynamics& getDynamics() override {
+        ++reads;
+        return m_dynamics;
+    }
+    const RBDynamics& getDynamics() const override {
+        ++reads;
+        return m_dynamics;
+    }
+    // How often anything read a UserBody's dynamics (what a space reads of the bodies: QueryBatchTest.cpp).
+    static inline unsigned long reads = 0;
     void setDynamics(const RBDynamics& d) override { m_dynamics = d; }
     void reset(int) override {}
     void suspend() const override {}
