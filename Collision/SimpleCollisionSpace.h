@@ -247,10 +247,11 @@ private:
         unsigned long long order; // the geometry's join order (never reused: one that left is never matched)
         const iRigidBody* body;
         unsigned shapeVersion;
-        bool posed; // its pose was finite
-        Vector origin;
-        Matrix rotation = Matrix(1);
+        bool raw; // its body has no parent: pose holds what its pose is made of (compared bit for bit)
+        bool posed = true; // else: its pose was finite, and pose holds it (origin, rotation rows; com zero)
+        gcol::PoseInputs pose;
     };
+    static BatchPose batchPoseOf(const CollisionGeometry& g);
     std::vector<BatchPose> m_batchPoses; // per member at beginQueries(), in the members' (join) order
     int m_batchDepth = 0;                // beginQueries() not yet ended
     bool m_queriesSynced = false;        // inside a batch: the broadphase holds every member at its pose

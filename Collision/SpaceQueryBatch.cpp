@@ -2,6 +2,7 @@
 // broadphase up to date with every geometry's current pose first (nothing tells a space that a body moved);
 // inside one, the first query does it for all, and endQueries() checks the promise that nothing moved.
 #include "Broadphase.h"
+#include "PoseInputs.h"
 #include "SimpleCollisionSpace.h"
 #include "iRigidBody.h"
 #include "iUtilities.h"
@@ -15,19 +16,35 @@ void SimpleCollisionSpace::prepareQuery() {
     m_queriesSynced = m_batchDepth > 0;
 }
 
+SimpleCollisionSpace::BatchPose SimpleCollisionSpace::batchPoseOf(const CollisionGeometry& g) {
+    BatchPose p;
+    p.order = g.spaceState().order;
+    p.body = g.body();
+    p.shapeVersion = g.shapeVersion();
+    const RBDynamics* d = p.body ? &p.body->getDynamics() : nullptr;
+    p.raw = d && !d->attachedTo();
+    if (p.raw) { // what its pose is made of, without working the pose out (PoseInputs.h)
+        p.pose.store(*d);
+        return p;
+    }
+    Vector origin;
+    Matrix rotation(1);
+    p.posed = g.currentPose(origin, rotation);
+    p.pose.position = p.posed ? origin : Vector();
+    const float* r = rotation.data();
+    for (int i = 0; i < 3; ++i)
+        p.pose.rows[i] = p.posed ? Vector(r[4 * i], r[4 * i + 1], r[4 * i + 2]) : Vector();
+    return p;
+}
+
 void SimpleCollisionSpace::beginQueries() {
     if (m_batchDepth++ > 0) return; // nested: the outermost batch holds
     settleRemovals();
-    m_queriesSynced = false;
     m_batchPoses.clear();
-    for (const CollisionGeometry* g : m_members) {
-        BatchPose p;
-        p.order = g->spaceState().order;
-        p.body = g->body();
-        p.shapeVersion = g->shapeVersion();
-        p.posed = g->currentPose(p.origin, p.rotation);
-        m_batchPoses.push_back(p);
-    }
+    for (const CollisionGeometry* g : m_members) m_batchPoses.push_back(batchPoseOf(*g));
+    // The broadphase synced now, while what it reads of each geometry is still in cache.
+    m_broadphase->syncQueries(m_members, m_entries);
+    m_queriesSynced = true;
 }
 
 bool SimpleCollisionSpace::batchMoved() const {
@@ -41,11 +58,9 @@ bool SimpleCollisionSpace::batchMoved() const {
         if (at == m_batchPoses.size()) break;
         const BatchPose& was = m_batchPoses[at];
         if (was.order != order) continue; // joined inside the batch
-        Vector o;
-        Matrix r(1);
-        const bool posed = g->currentPose(o, r);
-        if (was.body != g->body() || was.shapeVersion != g->shapeVersion() || was.posed != posed ||
-            (posed && (o != was.origin || r != was.rotation)))
+        const BatchPose now = batchPoseOf(*g);
+        if (now.body != was.body || now.shapeVersion != was.shapeVersion || now.raw != was.raw ||
+            now.posed != was.posed || !gcol::sameWords<15>(&now.pose, &was.pose))
             return true;
     }
     return false;
