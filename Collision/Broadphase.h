@@ -35,12 +35,10 @@ public:
                                const std::vector<int>* changed) = 0;
     // Brings what queries search up to date with the geometries of all (the space's members) at their current
     // poses. entries are the space's from its last call (a geometry's SpaceState::entry names its own, if
-    // that entry's g is the geometry). Nothing to do for a broadphase whose queries consider every geometry.
+    // that entry's g is the geometry). batch: for the queries of a batch (iCollisionQueries.h), for which it
+    // may keep what is worth keeping over many queries.
     virtual void syncQueries(const std::vector<CollisionGeometry*>& all,
-                             const std::vector<SimpleCollisionSpace::Entry>& entries) {
-        (void)all;
-        (void)entries;
-    }
+                             const std::vector<SimpleCollisionSpace::Entry>& entries, bool batch) = 0;
     // Geometries of all that may meet box, or the segment origin + t * dir (0 <= t <= maxT), at the poses of
     // the last syncQueries (all unchanged since), in the order of all.
     virtual void overlapCandidates(const std::vector<CollisionGeometry*>& all, const gcol::Aabb& box,

@@ -12,7 +12,7 @@
 void SimpleCollisionSpace::prepareQuery() {
     settleRemovals();
     if (m_batchDepth > 0 && m_queriesSynced) return;
-    m_broadphase->syncQueries(m_members, m_entries);
+    m_broadphase->syncQueries(m_members, m_entries, m_batchDepth > 0);
     m_queriesSynced = m_batchDepth > 0;
 }
 
@@ -43,7 +43,7 @@ void SimpleCollisionSpace::beginQueries() {
     m_batchPoses.clear();
     for (const CollisionGeometry* g : m_members) m_batchPoses.push_back(batchPoseOf(*g));
     // The broadphase synced now, while what it reads of each geometry is still in cache.
-    m_broadphase->syncQueries(m_members, m_entries);
+    m_broadphase->syncQueries(m_members, m_entries, true);
     m_queriesSynced = true;
 }
 

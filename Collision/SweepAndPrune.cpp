@@ -1,7 +1,9 @@
 // SweepAndPrune.cpp - sort-and-sweep over the entries' boxes along x, planes first (SweepAndPrune.h).
 #include "SweepAndPrune.h"
+#include "DynamicTree.h"
 
 #include <algorithm>
+#include <cmath>
 #include <initializer_list>
 #include <limits>
 
@@ -141,12 +143,73 @@ void SweepAndPrune::sweep() {
     }
 }
 
-void SweepAndPrune::overlapCandidates(const std::vector<CollisionGeometry*>& all, const gcol::Aabb&,
-                                      std::vector<CollisionGeometry*>& out) {
-    out.assign(all.begin(), all.end());
+void SweepAndPrune::syncQueries(const std::vector<CollisionGeometry*>& all,
+                                const std::vector<SimpleCollisionSpace::Entry>& entries, bool batch) {
+    m_filtered = batch;
+    if (!batch) return; // each query tests every geometry exactly
+    m_queryBoxes.resize(all.size());
+    for (size_t k = 0; k < all.size(); ++k) {
+        const CollisionGeometry* g = all[k];
+        QueryBox& q = m_queryBoxes[k];
+        q.kind = QueryBox::Never;
+        if (g->isPlane()) {
+            q.kind = QueryBox::Always;
+            continue;
+        }
+        const CollisionGeometry::SpaceState& st = g->spaceState();
+        if (!g->body() || st.pendingDelete || st.pendingRemove) continue; // never a query result
+        if (st.entry >= 0 && size_t(st.entry) < entries.size() &&
+            SimpleCollisionSpace::atEntryPose(entries[size_t(st.entry)], *g)) {
+            q.box = entries[size_t(st.entry)].cache.tight; // its shapes' box at this very pose
+        } else {
+            Vector o;
+            Matrix r(1);
+            if (!g->currentPose(o, r)) continue;
+            m_shapes.clear();
+            g->worldShapes(o, r, m_shapes);
+            if (m_shapes.empty()) continue;
+            gcol::shapeAabb(m_shapes[0], q.box);
+            for (size_t i = 1; i < m_shapes.size(); ++i) {
+                gcol::Aabb b;
+                gcol::shapeAabb(m_shapes[i], b);
+                q.box = gcol::unite(q.box, b);
+            }
+        }
+        // Grown by far more than rounding (1e-5 of its distance from the origin, at least 1e-5): a grazing
+        // query that the exact test accepts is never filtered out.
+        const Vector& lo = q.box.min;
+        const Vector& hi = q.box.max;
+        const float reach =
+            std::fmax(std::fmax(std::fmax(std::fabs(lo.x), std::fabs(lo.y)), std::fabs(lo.z)),
+                      std::fmax(std::fmax(std::fabs(hi.x), std::fabs(hi.y)), std::fabs(hi.z)));
+        const float grow = 1e-5f * (1.0f + reach);
+        q.box.min -= Vector(grow, grow, grow);
+        q.box.max += Vector(grow, grow, grow);
+        q.kind = QueryBox::Bounded;
+    }
 }
 
-void SweepAndPrune::rayCandidates(const std::vector<CollisionGeometry*>& all, const Vector&, const Vector&,
-                                  float, std::vector<CollisionGeometry*>& out) {
-    out.assign(all.begin(), all.end());
+template <class Meets>
+void SweepAndPrune::candidates(const std::vector<CollisionGeometry*>& all,
+                               std::vector<CollisionGeometry*>& out, Meets meets) const {
+    if (!m_filtered) {
+        out.assign(all.begin(), all.end());
+        return;
+    }
+    out.clear();
+    for (size_t k = 0; k < all.size(); ++k) {
+        const QueryBox& q = m_queryBoxes[k];
+        if (q.kind == QueryBox::Always || (q.kind == QueryBox::Bounded && meets(q.box)))
+            out.push_back(all[k]);
+    }
+}
+
+void SweepAndPrune::overlapCandidates(const std::vector<CollisionGeometry*>& all, const gcol::Aabb& box,
+                                      std::vector<CollisionGeometry*>& out) {
+    candidates(all, out, [&box](const gcol::Aabb& b) { return gcol::overlaps(b, box); });
+}
+
+void SweepAndPrune::rayCandidates(const std::vector<CollisionGeometry*>& all, const Vector& origin,
+                                  const Vector& dir, float maxT, std::vector<CollisionGeometry*>& out) {
+    candidates(all, out, [&](const gcol::Aabb& b) { return gcol::rayHitsBox(b, origin, dir, maxT); });
 }

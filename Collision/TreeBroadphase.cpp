@@ -327,7 +327,7 @@ bool TreeBroadphase::stillInside(const CollisionGeometry* g,
 }
 
 void TreeBroadphase::syncQueries(const std::vector<CollisionGeometry*>& all,
-                                 const std::vector<SimpleCollisionSpace::Entry>& entries) {
+                                 const std::vector<SimpleCollisionSpace::Entry>& entries, bool) {
     m_queryPlanes.clear();
     for (CollisionGeometry* g : all) {
         if (g->isPlane()) {

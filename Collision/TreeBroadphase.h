@@ -38,7 +38,7 @@ public:
     // Every proxy brought to its geometry's current pose: a pose compare a geometry, shapes made anew only
     // for one that moved.
     void syncQueries(const std::vector<CollisionGeometry*>& all,
-                     const std::vector<SimpleCollisionSpace::Entry>& entries) override;
+                     const std::vector<SimpleCollisionSpace::Entry>& entries, bool batch) override;
     void overlapCandidates(const std::vector<CollisionGeometry*>& all, const gcol::Aabb& box,
                            std::vector<CollisionGeometry*>& out) override;
     void rayCandidates(const std::vector<CollisionGeometry*>& all, const Vector& origin, const Vector& dir,

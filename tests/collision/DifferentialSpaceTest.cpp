@@ -62,3 +62,9 @@ TEST(DifferentialSpace, OctreeEqualsSimpleWithoutSampling) {
     auto reference = [] { return CreateSimpleCollisionSpace(0); };
     spacediff::checkAgainstReference(make, reference, Scene::Dense, 4, 200, 40);
 }
+// The simple space answering every other call's queries in a batch (boxes kept from the batch's start, exact
+// tests only where a query meets one) beside itself answering every query by brute force.
+TEST(DifferentialSpace, SimpleBatchedQueriesEqualBruteForce) {
+    for (Scene scene : {Scene::Sparse, Scene::Dense, Scene::Mixed, Scene::MostlyFixed})
+        spacediff::checkAgainstReference(makeSimple, makeSimple, scene, 2, 200, 30);
+}
