@@ -4,6 +4,7 @@
 // in SpaceQueries.cpp.
 #include "SimpleCollisionSpace.h"
 #include "Broadphase.h"
+#include "FetchAhead.h"
 #include "SweepAndPrune.h"
 #include "TreeBroadphase.h"
 #include "iOctreeCollisionSpace.h"
@@ -158,8 +159,25 @@ void SimpleCollisionSpace::populateContactList(float delta) {
     m_pairCount = pairs.count;
     if (m_restingNewcomer) wakeSleepersUnderNewcomers(pairs.first, pairs.count);
     const float stepDelta = continuous ? delta : 0.0f;
-    for (const std::pair<int, int>& p : pairs)
+    // The pairs' entries and shapes lie all over their arrays (the pairs come in the broadphase's order):
+    // each is asked for a few pairs ahead, the entries first (where its shapes are is in them).
+    constexpr size_t kEntriesAhead = 8, kShapesAhead = 4;
+    for (size_t k = 0; k < pairs.count; ++k) {
+        if (k + kEntriesAhead < pairs.count) {
+            const std::pair<int, int>& later = pairs.first[k + kEntriesAhead];
+            for (int i : {later.first, later.second}) { // its first line, and the one with first and last
+                gcol::fetchAhead(&m_entries[size_t(i)]);
+                gcol::fetchAhead(&m_entries[size_t(i)].first);
+            }
+        }
+        if (k + kShapesAhead < pairs.count) {
+            const std::pair<int, int>& later = pairs.first[k + kShapesAhead];
+            for (int i : {later.first, later.second}) // its first shape (96 bytes: two lines)
+                gcol::fetchAhead(m_shapes.data() + m_entries[size_t(i)].first, sizeof(gcol::WorldShape));
+        }
+        const std::pair<int, int>& p = pairs.first[k];
         testPair(m_entries[size_t(p.first)], m_entries[size_t(p.second)], stepDelta);
+    }
     if (m_droppedPairs > 0 && !m_reportedDrops) {
         m_reportedDrops = true;
         error(

@@ -4,6 +4,7 @@
 // built without a load waiting on a store (VectorRegister.h) and with its geometry's and body's cache lines
 // asked for a few entries ahead.
 #include "BoxAxes.h"
+#include "FetchAhead.h"
 #include "MathEigen.h"
 #include "PoseInputs.h"
 #include "SimpleCollisionSpace.h"
@@ -332,14 +333,7 @@ namespace {
 // not settle between 4 and 12: run alone (a fresh heap), 1.43 ms at 4 against 1.85 at 12 (median of six
 // each); after the rest of the benchmark (an aged heap), 1.75-1.82 at 4 against 1.50-1.52 at 12.
 constexpr int kFetchAhead = 12;
-// Asks for the cache line at p to be loaded (a hint: no effect where the compiler has no such builtin).
-inline void fetchAhead(const void* p) {
-#if defined(__GNUC__) || defined(__clang__)
-    __builtin_prefetch(p);
-#else
-    (void)p;
-#endif
-}
+using gcol::fetchAhead;
 
 } // namespace
 
