@@ -16,17 +16,24 @@ float area(const Aabb& b) {
 
 } // namespace
 
-bool rayHitsBox(const Aabb& box, const Vector& origin, const Vector& dir, float maxT) {
+RaySegment::RaySegment(const Vector& o, const Vector& dir, float t) : maxT(t) {
+    for (int i = 0; i < 3; ++i) {
+        origin[i] = component(o, i);
+        const float d = component(dir, i);
+        flat[i] = d == 0.0f;
+        inverse[i] = flat[i] ? 0.0f : 1.0f / d;
+    }
+}
+
+bool RaySegment::hits(const Aabb& box) const {
     float lo = 0.0f, hi = maxT;
     for (int i = 0; i < 3; ++i) {
-        const float o = component(origin, i), d = component(dir, i);
-        const float bmin = component(box.min, i), bmax = component(box.max, i);
-        if (d == 0.0f) {
+        const float o = origin[i], bmin = component(box.min, i), bmax = component(box.max, i);
+        if (flat[i]) {
             if (o < bmin || o > bmax) return false;
             continue;
         }
-        const float inv = 1.0f / d;
-        float t0 = (bmin - o) * inv, t1 = (bmax - o) * inv;
+        float t0 = (bmin - o) * inverse[i], t1 = (bmax - o) * inverse[i];
         if (t0 > t1) std::swap(t0, t1);
         lo = std::fmax(lo, t0);
         hi = std::fmin(hi, t1);

@@ -36,8 +36,18 @@ inline Aabb unite(const Aabb& a, const Aabb& b) {
     return u;
 }
 
-// Whether origin + t * dir meets box for some t in [0, maxT]; dir need not be unit.
-bool rayHitsBox(const Aabb& box, const Vector& origin, const Vector& dir, float maxT);
+// The segment origin + t * dir, 0 <= t <= maxT (dir need not be unit), ready to be tested against many
+// boxes: the reciprocals of dir's components are worked out once.
+struct RaySegment {
+    RaySegment(const Vector& origin, const Vector& dir, float maxT);
+    bool hits(const Aabb& box) const; // whether it meets box (a slab test)
+    float origin[3], inverse[3], maxT;
+    bool flat[3]; // dir's component is 0: the slab test is whether origin lies within the box on that axis
+};
+// Whether origin + t * dir meets box for some t in [0, maxT] (RaySegment::hits, for one box).
+inline bool rayHitsBox(const Aabb& box, const Vector& origin, const Vector& dir, float maxT) {
+    return RaySegment(origin, dir, maxT).hits(box);
+}
 
 class DynamicTree {
 public:
@@ -118,7 +128,8 @@ template <class Visit> void DynamicTree::query(const Aabb& box, Visit&& visit) c
 
 template <class Visit>
 void DynamicTree::rayCast(const Vector& origin, const Vector& dir, float maxT, Visit&& visit) const {
-    walk([&](const Aabb& node) { return rayHitsBox(node, origin, dir, maxT); }, visit);
+    const RaySegment segment(origin, dir, maxT);
+    walk([&segment](const Aabb& node) { return segment.hits(node); }, visit);
 }
 
 } // namespace gcol

@@ -211,5 +211,6 @@ void SweepAndPrune::overlapCandidates(const std::vector<CollisionGeometry*>& all
 
 void SweepAndPrune::rayCandidates(const std::vector<CollisionGeometry*>& all, const Vector& origin,
                                   const Vector& dir, float maxT, std::vector<CollisionGeometry*>& out) {
-    candidates(all, out, [&](const gcol::Aabb& b) { return gcol::rayHitsBox(b, origin, dir, maxT); });
+    const gcol::RaySegment segment(origin, dir, maxT);
+    candidates(all, out, [&segment](const gcol::Aabb& b) { return segment.hits(b); });
 }
