@@ -1,13 +1,12 @@
 // SpaceQueryBatch.cpp - batches of queries (iCollisionQueries.h): a query outside a batch brings the
 // broadphase up to date with every geometry's current pose first (nothing tells a space that a body moved);
-// inside one, the first query does it for all, and endQueries() checks the promise that nothing moved.
+// a batch does it once, at its start (again only after geometry joined or left, or a call), and
+// endQueries() checks the promise that nothing moved.
 #include "Broadphase.h"
 #include "PoseInputs.h"
 #include "SimpleCollisionSpace.h"
 #include "iRigidBody.h"
 #include "iUtilities.h"
-
-#include <algorithm>
 
 void SimpleCollisionSpace::prepareQuery() {
     settleRemovals();

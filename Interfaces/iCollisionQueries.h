@@ -41,10 +41,11 @@ public:
                                std::vector<iCollisionGeometry*>& out) = 0;
 
     // A batch of queries. Between beginQueries() and endQueries() the game promises that no body or geometry
-    // of the space moves or is reshaped; the space then looks at every geometry once, at the first query, and
-    // each query after it costs what its candidates cost (the octree space: O(log N + hits) instead of O(N)).
-    // Queries answer as outside a batch while the promise holds. Geometry may join or leave inside a batch
-    // (the next query looks at every geometry again). endQueries() checks the promise, O(N) once: a geometry
+    // of the space moves or is reshaped; the space then looks at every geometry once, at beginQueries(), and
+    // each query costs what its candidates cost (the octree space: O(log N + hits) instead of O(N); the
+    // simple space: a box compare a geometry instead of an exact test). Queries answer as outside a batch
+    // while the promise holds. Geometry may join or leave inside a batch (the next query looks at every
+    // geometry again). endQueries() checks the promise, O(N) once: a geometry
     // whose pose or shapes changed since beginQueries() is reported with error(), as the queries after the
     // change may have looked for it where it was. Batches nest (the outermost one counts); an endQueries()
     // without a beginQueries() is refused with error(). A space without batches (a game's own) answers every
