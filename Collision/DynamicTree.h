@@ -36,6 +36,18 @@ inline Aabb unite(const Aabb& a, const Aabb& b) {
     return u;
 }
 
+// The box of shapes (at least one, all bounded).
+inline Aabb boundsOf(const std::vector<WorldShape>& shapes) {
+    Aabb box;
+    shapeAabb(shapes[0], box);
+    for (size_t i = 1; i < shapes.size(); ++i) {
+        Aabb b;
+        shapeAabb(shapes[i], b);
+        box = unite(box, b);
+    }
+    return box;
+}
+
 // The segment origin + t * dir, 0 <= t <= maxT (dir need not be unit), ready to be tested against many
 // boxes: the reciprocals of dir's components are worked out once.
 struct RaySegment {

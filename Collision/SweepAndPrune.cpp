@@ -168,12 +168,7 @@ void SweepAndPrune::syncQueries(const std::vector<CollisionGeometry*>& all,
             m_shapes.clear();
             g->worldShapes(o, r, m_shapes);
             if (m_shapes.empty()) continue;
-            gcol::shapeAabb(m_shapes[0], q.box);
-            for (size_t i = 1; i < m_shapes.size(); ++i) {
-                gcol::Aabb b;
-                gcol::shapeAabb(m_shapes[i], b);
-                q.box = gcol::unite(q.box, b);
-            }
+            q.box = gcol::boundsOf(m_shapes);
         }
         // Grown by far more than rounding (1e-5 of its distance from the origin, at least 1e-5): a grazing
         // query that the exact test accepts is never filtered out.

@@ -12,17 +12,6 @@
 
 namespace {
 
-gcol::Aabb boundsOf(const std::vector<gcol::WorldShape>& shapes) {
-    gcol::Aabb box;
-    gcol::shapeAabb(shapes[0], box);
-    for (size_t i = 1; i < shapes.size(); ++i) {
-        gcol::Aabb b;
-        gcol::shapeAabb(shapes[i], b);
-        box = gcol::unite(box, b);
-    }
-    return box;
-}
-
 // gcol::overlaps of two proxies' exact boxes: x, y and z at once on SSE2 (the fourth lane, the entry index
 // against the fourth hi, is masked off).
 template <class Exact> bool boxesOverlap(const Exact& a, const Exact& b) {
@@ -355,7 +344,7 @@ void TreeBroadphase::syncQueries(const std::vector<CollisionGeometry*>& all,
         m_shapes.clear();
         g->worldShapes(o, r, m_shapes);
         if (m_shapes.empty()) continue;
-        const gcol::Aabb box = boundsOf(m_shapes);
+        const gcol::Aabb box = gcol::boundsOf(m_shapes);
         const int p = proxyOf(g);
         Proxy& x = m_proxies[size_t(p)];
         if ((x.leaf == gcol::DynamicTree::kNull && !x.stale) || !gcol::contains(x.fat, box)) refit(p, box);

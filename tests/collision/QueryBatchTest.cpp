@@ -71,39 +71,50 @@ std::vector<Answer> ask(iCollisionQueries* q, int k) {
     return answers;
 }
 
+// k rays and k overlaps asked one at a time, then again in a batch: the answers, the body reads each way
+// took, and the errors the batch reported.
+struct AloneAndBatched {
+    std::vector<Answer> alone, batched;
+    unsigned long readsAlone = 0, readsBatched = 0, errors = 0;
+};
+AloneAndBatched askBothWays(iCollisionQueries* q, int k) {
+    AloneAndBatched r;
+    UserBody::reads = 0;
+    r.alone = ask(q, k);
+    r.readsAlone = UserBody::reads;
+    ErrorRecorder errors;
+    UserBody::reads = 0;
+    {
+        QueryBatch batch(q);
+        r.batched = ask(q, k);
+    }
+    r.readsBatched = UserBody::reads;
+    r.errors = errors.count();
+    return r;
+}
+
 } // namespace
 
 // 1,000 boxes, 50 rays and 50 overlaps: outside a batch every query reads every body (O(N) a query: nothing
-// tells the space that a body moved); inside one the bodies are read once to begin, once to sync, once to
-// check at the end, and then only the candidates'. The answers are the same, and the ray along a row meets
-// that row's first box, 4.5 m along it (from x = -5 to its face at -0.5).
+// tells the space that a body moved); inside one the bodies are read at its start (its record and the tree's
+// sync) and by the check at its end, and then only the candidates'. The answers are the same, and the ray
+// along a row meets that row's first box, 4.5 m along it (from x = -5 to its face at -0.5).
 TEST(QueryBatch, TheOctreeSpaceReadsEachBodyOnceABatchNotOnceAQuery) {
     iCollisionSpace* space = CreateOctreeCollisionSpace();
     {
         Grid grid(space, 1000);
-        iCollisionQueries* q = queriesOf(space);
-        UserBody::reads = 0;
-        const std::vector<Answer> alone = ask(q, 50);
-        const unsigned long readsAlone = UserBody::reads;
-        UserBody::reads = 0;
-        std::vector<Answer> batched;
-        {
-            ErrorRecorder errors;
-            QueryBatch batch(q);
-            batched = ask(q, 50);
-            EXPECT_EQ(errors.count(), 0u);
-        }
-        const unsigned long readsBatched = UserBody::reads;
-        EXPECT_TRUE(alone == batched);
-        for (const Answer& a : alone) {
+        const AloneAndBatched r = askBothWays(queriesOf(space), 50);
+        EXPECT_EQ(r.errors, 0u);
+        EXPECT_TRUE(r.alone == r.batched);
+        for (const Answer& a : r.alone) {
             ASSERT_TRUE(a.hit);
             EXPECT_NEAR(a.distance, 4.5f, 1e-5f);
             EXPECT_GE(a.overlaps.size(), 1u);
         }
-        EXPECT_GE(readsAlone, 100u * 1000u); // every body, every query
-        // Begin, the first query's sync (twice) and the end's check read each body; the queries themselves
-        // their candidates' (a row's ten boxes, a sphere's neighbours: 4,597 reads in all when written).
-        EXPECT_LE(readsBatched, 4u * 1000u + 100u * 20u) << "alone " << readsAlone;
+        EXPECT_GE(r.readsAlone, 100u * 1000u); // every body, every query
+        // The start (the record once, the tree's sync twice) and the end's check read each body; the queries
+        // themselves their candidates' (a row's ten boxes, a sphere's neighbours: 4,597 reads in all).
+        EXPECT_LE(r.readsBatched, 4u * 1000u + 100u * 20u) << "alone " << r.readsAlone;
     }
     space->Delete();
 }
@@ -115,22 +126,11 @@ TEST(QueryBatch, TheSimpleSpaceAnswersAsOutsideABatchReadingEachBodyOnceABatch) 
     iCollisionSpace* space = CreateSimpleCollisionSpace();
     {
         Grid grid(space, 300);
-        iCollisionQueries* q = queriesOf(space);
-        UserBody::reads = 0;
-        const std::vector<Answer> alone = ask(q, 20);
-        const unsigned long readsAlone = UserBody::reads;
-        ErrorRecorder errors;
-        std::vector<Answer> batched;
-        UserBody::reads = 0;
-        {
-            QueryBatch batch(q);
-            batched = ask(q, 20);
-        }
-        const unsigned long readsBatched = UserBody::reads;
-        EXPECT_TRUE(alone == batched);
-        EXPECT_EQ(errors.count(), 0u);
-        EXPECT_GE(readsAlone, 40u * 300u);
-        EXPECT_LE(readsBatched, 4u * 300u + 40u * 20u) << "alone " << readsAlone;
+        const AloneAndBatched r = askBothWays(queriesOf(space), 20);
+        EXPECT_TRUE(r.alone == r.batched);
+        EXPECT_EQ(r.errors, 0u);
+        EXPECT_GE(r.readsAlone, 40u * 300u);
+        EXPECT_LE(r.readsBatched, 4u * 300u + 40u * 20u) << "alone " << r.readsAlone;
     }
     space->Delete();
 }
