@@ -72,8 +72,8 @@ public:
     void setSoftness(const Manifold& m, Real biasRate, Real massScale, Real impulseScale);
     // Every point's rows at the step's start (ContactSolver::prepare, a block at a time): the normal and,
     // with friction, the two tangents; each point keeps its normal row and approach speed too (restitution,
-    // shock propagation).
-    void prepare(std::vector<Manifold>& manifolds, const std::vector<SolverBody>& bodies);
+    // shock propagation), and each manifold its load (Manifold::load, at sub-step h).
+    void prepare(std::vector<Manifold>& manifolds, const std::vector<SolverBody>& bodies, Real h);
     // The bodies' velocities live in the blocks' flat array through the sub-steps: loaded once after pack()
     // and stored back once after the last sub-step (or around whatever else reads or writes a SolverBody's
     // velocities in between: joints, shock propagation).
@@ -109,7 +109,6 @@ public:
         return NormalRow{laneOf(r.armA, l), laneOf(r.armB, l), laneOf(r.turnA, l), laneOf(r.turnB, l),
                          r.mass.lane(l)};
     }
-    Real normalMass(const Manifold& m, int point) const { return at(m).p[point].row[0].mass.lane(m.lane); }
     // A manifold's point's gap as the last sweep that measured gaps found it (ContactBlocks::Sweep).
     Real gap(const Manifold& m, int point) const { return at(m).p[point].gap.lane(m.lane); }
     // The impulses back into the manifolds.

@@ -3,6 +3,9 @@
 #include "ContactBlocks.h"
 #include "SolverRows.h"
 
+#include <algorithm>
+#include <limits>
+
 namespace physics {
 
 namespace {
@@ -40,7 +43,7 @@ Lanes3 selectLanes3(LaneMask where, const Lanes3& yes, const Lanes3& no) {
 // each centre of mass, r x d, I^-1 (r x d), the effective mass 1 / (1/m_a + 1/m_b + (r_a x d) I_a^-1 (r_a x
 // d) +
 // ...), and the approach speed along the normal.
-void ContactBlocks::prepare(std::vector<Manifold>& manifolds, const std::vector<SolverBody>& bodies) {
+void ContactBlocks::prepare(std::vector<Manifold>& manifolds, const std::vector<SolverBody>& bodies, Real h) {
     static const Mat3 zeroMatrix = Mat3::Zero();
     static const Vec3 zeroVector = Vec3::Zero();
     const Lanes zero(0), one(1);
@@ -50,6 +53,7 @@ void ContactBlocks::prepare(std::vector<Manifold>& manifolds, const std::vector<
         const Vec3 *ca[kLanes], *cb[kLanes], *va[kLanes], *wa[kLanes], *vb[kLanes], *wb[kLanes];
         for (int l = 0; l < kLanes; ++l) {
             const int k = block.manifold[l];
+            if (k >= 0) manifolds[size_t(k)].load = std::numeric_limits<Real>::lowest();
             const SolverBody* a = k >= 0 ? &bodies[size_t(manifolds[size_t(k)].a)] : nullptr;
             const SolverBody* b = k >= 0 ? &bodies[size_t(manifolds[size_t(k)].b)] : nullptr;
             ia[l] = a ? &a->invInertia : &zeroMatrix;
@@ -102,10 +106,17 @@ void ContactBlocks::prepare(std::vector<Manifold>& manifolds, const std::vector<
             }
             const BlockRow& n = q.row[0];
             q.approach = (dot(n.dir, velB - velA) + dot(n.armB, spinB)) - dot(n.armA, spinA);
-            for (int l = 0; l < kLanes; ++l) { // the approach kept with the point (restitution)
+            // The approach kept with the point (restitution), and the load it carried last step with the
+            // manifold (the soft contact: ContactSolver::contactSoftness), while the mass is at hand.
+            for (int l = 0; l < kLanes; ++l) {
                 const int k = block.manifold[l];
                 if (k < 0 || i >= manifolds[size_t(k)].count) continue;
-                manifolds[size_t(k)].points[i].approachSpeed = q.approach.lane(l);
+                Manifold& m = manifolds[size_t(k)];
+                ManifoldPoint& p = m.points[i];
+                p.approachSpeed = q.approach.lane(l);
+                p.maxNormalImpulse = 0; // the sub-steps' (unpack)
+                const Real mass = n.mass.lane(l);
+                if (mass > 0.0f) m.load = std::max(m.load, p.normalImpulse / (h * mass));
             }
         }
     }

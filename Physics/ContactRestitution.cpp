@@ -28,7 +28,9 @@
 
 namespace physics {
 
-// p's rows (row: its normal row) and approachSpeed (v_n after this step's forces) are set.
+// A bouncing point's touching speed (and what the forces added), worked out after the sub-steps for the
+// bouncing points only: what it is made of is as it was when the solve began (the start poses, the forces'
+// share dv and dw, the approach speed, the normal row, which stays in the blocks until the next step).
 void ContactSolver::prepareBounce(const SolverBody& a, const SolverBody& b, ManifoldPoint& p,
                                   const NormalRow& row, Real dt) {
     p.forceSpeed = p.normal.dot(b.dv - a.dv) + row.armB.dot(b.dw) - row.armA.dot(a.dw);
@@ -48,6 +50,8 @@ void ContactSolver::findBounces() {
         m.bounces = false;
         for (int i = 0; m.restitution > 0.0f && i < m.count; ++i)
             if (m.points[i].approachSpeed < threshold && m.points[i].maxNormalImpulse > 0.0f) {
+                prepareBounce(m_bodies[size_t(m.a)], m_bodies[size_t(m.b)], m.points[i],
+                              m_blocks.normalRow(m, i), m_dt);
                 m_bouncing.push_back({k, i});
                 m.bounces = true;
             }

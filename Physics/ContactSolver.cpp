@@ -142,7 +142,7 @@ void ContactSolver::solve(Real dt, const SolverBodyAccess& access) {
     m_jointSoft = softness(2.0f * 3.14159265f * std::min(Real(m_settings.jointHertz), 0.25f / h),
                            m_settings.jointDampingRatio, h);
     m_blocks.pack(m_manifolds, m_bodies); // the rows and impulses live in the blocks until unpack
-    prepare(dt, h);
+    prepare(h);
     orderByLevel();
     splitForces();
     tetherJoints(); // a chain hung from an immovable body: its far bodies tethered to where it starts
@@ -216,33 +216,19 @@ ContactSolver::Softness ContactSolver::contactSoftness(const Manifold& m, Real h
     const Real allowed = m_settings.restingOverlap * m.size;
     // What each unit of the contact's effective mass carries: its own weight at least, or what last step's
     // impulses held up (a stack's lower contacts, a heavy body on a light one).
-    Real load = m_settings.gravity;
-    for (int i = 0; i < m.count; ++i) {
-        const ManifoldPoint& p = m.points[i];
-        const Real mass = m_blocks.normalMass(m, i);
-        if (mass > 0.0f) load = std::max(load, p.normalImpulse / (h * mass));
-    }
+    const Real load = std::max(Real(m_settings.gravity), m.load);
     if (!(allowed > 0.0f) || !(load > allowed * m_omega * m_omega)) return m_soft;
     const Real omega = std::min(Real(std::sqrt(load / allowed)), Real(m_settings.maxContactTurn / h));
     return omega > m_omega ? softness(omega, m_settings.dampingRatio, h) : m_soft;
 }
 
-// Each manifold's soft contact, then every point's rows at the step's start (the normal and, with friction,
-// the two tangents) in the blocks, a block at a time (ContactBlocks::prepare).
-void ContactSolver::prepare(Real dt, Real h) {
-    m_blocks.prepare(m_manifolds, m_bodies);
+// Every point's rows at the step's start (the normal and, with friction, the two tangents) in the blocks, a
+// block at a time (ContactBlocks::prepare), then each manifold's soft contact from the load found with them.
+void ContactSolver::prepare(Real h) {
+    m_blocks.prepare(m_manifolds, m_bodies, h);
     for (Manifold& m : m_manifolds) {
         const Softness soft = contactSoftness(m, h);
         m_blocks.setSoftness(m, soft.biasRate, soft.massScale, soft.impulseScale);
-    }
-    for (Manifold& m : m_manifolds) {
-        const SolverBody &a = m_bodies[m.a], &b = m_bodies[m.b];
-        for (int i = 0; i < m.count; ++i) {
-            ManifoldPoint& p = m.points[i];
-            p.maxNormalImpulse = 0;
-            if (m.restitution > 0.0f)
-                prepareBounce(a, b, p, m_blocks.normalRow(m, i), dt); // read only by bouncing points
-        }
     }
 }
 

@@ -196,7 +196,7 @@ private:
     void carryTethers() const;
     // ContactSolver.cpp
     void applySwitches();
-    void prepare(Real dt, Real h);
+    void prepare(Real h);
     void splitForces();
     template <class Work> void onBodies(bool any, Work work);
     void warmStart(bool firstSubstep);

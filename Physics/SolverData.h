@@ -71,6 +71,9 @@ struct Manifold {
     Real size = 0;
     bool bounces = false; // a point bounces this step: its overlap is projected out entirely
     Real projectable = 0; // how much further its overlap may still be projected out this step
+    // The most any point carried last step per unit of its effective mass (normalImpulse / (h m_eff) over
+    // the points with a mass; lowest() with none), found with the rows (ContactSolver::contactSoftness).
+    Real load = 0;
     int count = 0;
     ManifoldPoint points[4];
     int block = -1, lane = 0; // where the solver's wide rows hold it during a solve (ContactBlocks.h)
