@@ -14,6 +14,11 @@
 namespace physics {
 
 namespace {
+// Passes over every body ask for the lines of the body this many places ahead (Prefetch.h).
+constexpr size_t kBodiesAhead = 4;
+} // namespace
+
+namespace {
 constexpr int MAX_STEP_RATE = 10000;
 } // namespace
 
@@ -261,6 +266,7 @@ void PhysicsScene::step(float dt) {
     //    the mass and com the game may have written (RBDynamics.h); integrateComposite then keeps the angular
     //    velocity.
     for (size_t i = 0; i < bodies().size(); ++i) {
+        if (i + kBodiesAhead < bodies().size()) bodies()[i + kBodiesAhead]->prefetchValidation();
         RigidBody* b = bodies()[i];
         if (b->dying() || b->pendingRemoval) continue;
         b->getDynamics().updateInertia();
@@ -329,6 +335,10 @@ void PhysicsScene::step(float dt) {
     //    along). A free body is moved by the game's integrator; for one the solver moves, the integrator
     //    only works out what the forces do to its velocities.
     for (size_t i = 0; i < bodies().size(); ++i) {
+        if (i + kBodiesAhead < bodies().size()) {
+            const int slot = bodies()[i + kBodiesAhead]->solverSlot;
+            if (slot >= 0) prefetchLines(&m_solver.body(slot), sizeof(SolverBody));
+        }
         RigidBody* b = bodies()[i];
         if (b->dying() || b->pendingRemoval || b->asleep() || b->getDynamics().attachedTo()) continue;
         integrateComposite(b, dt);
@@ -360,6 +370,7 @@ void PhysicsScene::step(float dt) {
 
     // 8. A step that produced NaN or Inf (absurd forces) is undone; otherwise it is the new valid state.
     for (size_t i = 0; m_validationOn && i < bodies().size(); ++i) {
+        if (i + kBodiesAhead < bodies().size()) bodies()[i + kBodiesAhead]->prefetchValidation();
         RigidBody* b = bodies()[i];
         if (b->dying() || b->pendingRemoval || b->asleep()) continue;
         b->acceptState("after a step");
