@@ -122,6 +122,16 @@ void SimpleCollisionSpace::Delete() const {
         error(L"iCollisionSpace::Delete: refused while the space is notifying listeners");
         return;
     }
+    if (m_batchDepth > 0) { // a QueryBatch still in scope would end it after it is gone
+        if (!m_deleteAfterBatch)
+            error(L"iCollisionSpace::Delete: inside a query batch; the space is deleted when the batch ends");
+        m_deleteAfterBatch = true;
+        return;
+    }
+    destroy();
+}
+
+void SimpleCollisionSpace::destroy() const {
     for (iCollisionGeometry* o : m_geometry) {
         CollisionGeometry* g = CollisionGeometry::from(o);
         g->setSpace(nullptr);

@@ -106,7 +106,7 @@ public:
     void suspend() const override {}
     void release() const override {}
     // Geometries are not deleted: they leave the space (and stay usable). Clears the default space if it
-    // was this one.
+    // was this one. Inside a query batch the space goes when the batch ends (a QueryBatch in scope ends it).
     void Delete() const override;
 
     // Called by a geometry's Delete(): while listeners are being notified the deletion is queued (true);
@@ -252,9 +252,11 @@ private:
         gcol::PoseInputs pose;
     };
     static BatchPose batchPoseOf(const CollisionGeometry& g);
-    std::vector<BatchPose> m_batchPoses; // per member at beginQueries(), in the members' (join) order
-    int m_batchDepth = 0;                // beginQueries() not yet ended
-    bool m_queriesSynced = false;        // inside a batch: the broadphase holds every member at its pose
+    std::vector<BatchPose> m_batchPoses;     // per member at beginQueries(), in the members' (join) order
+    int m_batchDepth = 0;                    // beginQueries() not yet ended
+    mutable bool m_deleteAfterBatch = false; // Delete() came inside the batch: endQueries() deletes
+    void destroy() const;                    // Delete()'s work
+    bool m_queriesSynced = false;            // inside a batch: the broadphase holds every member at its pose
     // SpaceShapeCast.cpp (the cast) and SpaceCastObstacles.cpp (what a sweep may meet)
     static constexpr int kUnusableSweep = -2; // CastGeometry::sweep of a geometry whose pose is not finite
     struct CastGeometry {

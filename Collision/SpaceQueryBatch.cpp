@@ -77,4 +77,11 @@ void SimpleCollisionSpace::endQueries() {
               L"after the change may have looked for it where it was (move nothing between beginQueries and "
               L"endQueries)");
     m_batchPoses.clear();
+    if (!m_deleteAfterBatch) return;
+    m_deleteAfterBatch = false;
+    if (m_notifying || m_populating) // the batch ended in a listener: the space cannot go from under it
+        error(L"iCollisionSpace::Delete (at the query batch's end): refused while the space is notifying "
+              L"listeners");
+    else
+        destroy(); // Delete() came inside the batch
 }

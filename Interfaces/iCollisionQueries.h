@@ -48,8 +48,10 @@ public:
     // geometry again). endQueries() checks the promise, O(N) once: a geometry
     // whose pose or shapes changed since beginQueries() is reported with error(), as the queries after the
     // change may have looked for it where it was. Batches nest (the outermost one counts); an endQueries()
-    // without a beginQueries() is refused with error(). A space without batches (a game's own) answers every
-    // query on its own: these do nothing.
+    // without a beginQueries() is refused with error(). The space's Delete() inside a batch is reported with
+    // error() and done when the outermost batch ends (the space answers until then), so that a QueryBatch
+    // still in scope never ends a deleted space. A space without batches (a game's own) answers every query
+    // on its own: these do nothing.
     virtual void beginQueries() {}
     virtual void endQueries() {}
 
@@ -58,7 +60,7 @@ protected:
 };
 
 // A batch of queries for the lifetime of this object (beginQueries() now, endQueries() when it goes out of
-// scope); q may be nullptr. End it before the space is deleted.
+// scope); q may be nullptr. A space deleted inside a batch says so with error() and goes when the batch ends.
 class QueryBatch {
 public:
     explicit QueryBatch(iCollisionQueries* q) : m_queries(q) {

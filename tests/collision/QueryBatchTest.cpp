@@ -1,6 +1,7 @@
 // QueryBatchTest.cpp - batches of queries (iCollisionQueries.h): inside one the octree space reads each body
 // once, not once a query, and answers as outside it; a body moved inside a batch is reported when it ends;
-// geometry may join and leave inside one; batches nest, and an end without a begin is refused.
+// geometry may join and leave inside one; batches nest, and an end without a begin is refused; a space
+// deleted inside one goes when it ends.
 #include "DefaultSpace.h"
 #include "ErrorRecorder.h"
 #include "UserBody.h"
@@ -233,4 +234,47 @@ TEST(QueryBatch, BatchesNestAndAnUnmatchedEndIsRefused) {
         EXPECT_EQ(errors.count(), 3u);
     }
     space->Delete();
+}
+
+// The space deleted inside a batch (a QueryBatch still in scope) says so and answers until the outermost
+// batch ends; then it goes, its geometry left without a space. (Under ASan, a batch ending a deleted space
+// is a use after free.)
+TEST(QueryBatch, ASpaceDeletedInsideABatchGoesWhenTheBatchEnds) {
+    for (bool octree : {false, true}) {
+        iCollisionSpace* space = octree ? CreateOctreeCollisionSpace() : CreateSimpleCollisionSpace();
+        static const iCollisionSpace* gone = nullptr;
+        const CollisionSpaceWatcher watcher = [](const iCollisionSpace* dying, void*) { gone = dying; };
+        watchCollisionSpaces(watcher, nullptr);
+        gone = nullptr;
+        UserBody* body = new UserBody(Vector(0, 0, 0));
+        iCollisionGeometry* box = nullptr;
+        {
+            DefaultSpace joins(space);
+            box = CreateCOBB(body, Vector(0.5f, 0.5f, 0.5f));
+        }
+        ErrorRecorder errors;
+        iCollisionQueries* q = queriesOf(space);
+        std::vector<iCollisionGeometry*> found;
+        {
+            QueryBatch outer(q);
+            {
+                QueryBatch inner(q);
+                space->Delete();
+                EXPECT_EQ(errors.count(), 1u) << "octree " << octree;
+                EXPECT_NE(ErrorRecorder::last().find(L"inside a query batch"), std::wstring::npos);
+                space->Delete(); // said once
+                EXPECT_EQ(errors.count(), 1u);
+                EXPECT_EQ(q->overlapSphere(Vector(0.8f, 0, 0), 0.5f, found), 1u); // the box reaches x = 0.5
+                EXPECT_EQ(q->overlapSphere(Vector(1.1f, 0, 0), 0.5f, found), 0u);
+            }
+            EXPECT_EQ(gone, nullptr); // the inner batch ended: the outer one holds
+            EXPECT_EQ(box->getSpace(), space);
+        }
+        EXPECT_EQ(gone, space);
+        EXPECT_EQ(box->getSpace(), nullptr);
+        EXPECT_EQ(errors.count(), 1u);
+        unwatchCollisionSpaces(watcher, nullptr);
+        box->Delete();
+        body->Delete();
+    }
 }
