@@ -30,8 +30,9 @@ inline void applyRow(const BlockRow& r, const Lanes& ima, const Lanes& imb, cons
 }
 
 // A block's two bodies' velocities in each lane, from the flat array (V: ContactBlocks::Velocity), and back
-// to where they are stored.
-template <class V> BlockVelocity gatherBlock(const ContactBlock& block, const V* u) {
+// to where they are stored. Inlined into the sweeps (called, they cost a two-body step 3 % more instructions,
+// the velocities returned through memory).
+template <class V> GUARDIAN_ALWAYS_INLINE BlockVelocity gatherBlock(const ContactBlock& block, const V* u) {
     const Real *va[kLanes], *wa[kLanes], *vb[kLanes], *wb[kLanes];
     for (int l = 0; l < kLanes; ++l) {
         va[l] = u[block.read[0][l]].v;
@@ -41,7 +42,8 @@ template <class V> BlockVelocity gatherBlock(const ContactBlock& block, const V*
     }
     return {gatherRows(va), gatherRows(wa), gatherRows(vb), gatherRows(wb)};
 }
-template <class V> void scatterBlock(const ContactBlock& block, const BlockVelocity& vel, V* u) {
+template <class V>
+GUARDIAN_ALWAYS_INLINE void scatterBlock(const ContactBlock& block, const BlockVelocity& vel, V* u) {
     Real *va[kLanes], *wa[kLanes], *vb[kLanes], *wb[kLanes];
     for (int l = 0; l < kLanes; ++l) {
         va[l] = u[block.write[0][l]].v;

@@ -23,6 +23,15 @@
 #define GUARDIAN_AVX_LANES 0
 #endif
 
+// A function the sweeps' hot loops always inline, whatever the compiler's own weighing says.
+#if defined(__GNUC__) || defined(__clang__)
+#define GUARDIAN_ALWAYS_INLINE inline __attribute__((always_inline))
+#elif defined(_MSC_VER)
+#define GUARDIAN_ALWAYS_INLINE __forceinline
+#else
+#define GUARDIAN_ALWAYS_INLINE inline
+#endif
+
 namespace physics {
 
 #if GUARDIAN_AVX_LANES
