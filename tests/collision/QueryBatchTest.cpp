@@ -7,6 +7,7 @@
 #include "UserBody.h"
 #include "iCOBB.h"
 #include "iCSphere.h"
+#include "iCollisionListener.h"
 #include "iCollisionQueries.h"
 #include "iOctreeCollisionSpace.h"
 #include "iSimpleCollisionSpace.h"
@@ -277,4 +278,48 @@ TEST(QueryBatch, ASpaceDeletedInsideABatchGoesWhenTheBatchEnds) {
         box->Delete();
         body->Delete();
     }
+}
+
+// A batch whose deletion is pending, ended by a listener while the space notifies it: the space cannot go
+// from under its own call, so the deletion is refused as Delete() there is, and the space stays usable.
+TEST(QueryBatch, ADeletionPendingWhenAListenerEndsTheBatchIsRefused) {
+    struct EndsTheBatch final : iCollisionListener {
+        iCollisionQueries* q = nullptr;
+        int calls = 0;
+        void HitWall(iRigidBody*, Vector, Vector) override {
+            if (calls++ == 0) q->endQueries();
+        }
+    };
+    iCollisionSpace* space = CreateSimpleCollisionSpace();
+    UserBody* a = new UserBody(Vector(0, 0, 0));
+    UserBody* b = new UserBody(Vector(0.9f, 0, 0)); // overlapping a by 0.1 m
+    iCollisionGeometry *ga = nullptr, *gb = nullptr;
+    {
+        DefaultSpace joins(space);
+        ga = CreateCOBB(a, Vector(0.5f, 0.5f, 0.5f));
+        gb = CreateCOBB(b, Vector(0.5f, 0.5f, 0.5f));
+    }
+    EndsTheBatch listener;
+    listener.q = queriesOf(space);
+    a->attachListener(&listener);
+    ErrorRecorder errors;
+    listener.q->beginQueries();
+    space->Delete(); // pending until the batch ends
+    EXPECT_EQ(errors.count(), 1u);
+    space->populateContactList(1.0f / 60.0f);
+    EXPECT_EQ(listener.calls, 1);
+    EXPECT_EQ(errors.count(), 2u);
+    EXPECT_NE(ErrorRecorder::last().find(L"refused while the space is notifying"), std::wstring::npos);
+    EXPECT_EQ(ga->getSpace(), space); // still here, and working
+    space->populateContactList(1.0f / 60.0f);
+    EXPECT_GT(space->getNumContacts(), 0u);
+    EXPECT_EQ(listener.calls, 2);
+    a->detachListener(&listener);
+    space->Delete(); // outside any batch: now
+    EXPECT_EQ(ga->getSpace(), nullptr);
+    EXPECT_EQ(errors.count(), 2u);
+    ga->Delete();
+    gb->Delete();
+    a->Delete();
+    b->Delete();
 }
