@@ -252,10 +252,10 @@ private:
         gcol::PoseInputs pose;
     };
     static BatchPose batchPoseOf(const CollisionGeometry& g);
-    std::vector<BatchPose> m_batchPoses;     // per member at beginQueries(), in the members' (join) order
-    int m_batchDepth = 0;                    // beginQueries() not yet ended
+    void destroy() const;                // Delete()'s work (at once, or at the end of the batch it came in)
+    std::vector<BatchPose> m_batchPoses; // per member at beginQueries(), in the members' (join) order
+    int m_batchDepth = 0;                // beginQueries() not yet ended
     mutable bool m_deleteAfterBatch = false; // Delete() came inside the batch: endQueries() deletes
-    void destroy() const;                    // Delete()'s work
     bool m_queriesSynced = false;            // inside a batch: the broadphase holds every member at its pose
     // SpaceShapeCast.cpp (the cast) and SpaceCastObstacles.cpp (what a sweep may meet)
     static constexpr int kUnusableSweep = -2; // CastGeometry::sweep of a geometry whose pose is not finite
