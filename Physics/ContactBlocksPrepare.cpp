@@ -114,7 +114,7 @@ void ContactBlocks::prepare(std::vector<Manifold>& manifolds, const std::vector<
                 Manifold& m = manifolds[size_t(k)];
                 ManifoldPoint& p = m.points[i];
                 p.approachSpeed = q.approach.lane(l);
-                p.maxNormalImpulse = 0; // the sub-steps' (unpack)
+                p.maxNormalImpulse = 0; // found again by the sub-steps (unpack)
                 const Real mass = n.mass.lane(l);
                 if (mass > 0.0f) m.load = std::max(m.load, p.normalImpulse / (h * mass));
             }

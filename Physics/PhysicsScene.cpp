@@ -266,7 +266,7 @@ void PhysicsScene::step(float dt) {
     //    the mass and com the game may have written (RBDynamics.h); integrateComposite then keeps the angular
     //    velocity.
     for (size_t i = 0; i < bodies().size(); ++i) {
-        if (i + kBodiesAhead < bodies().size()) bodies()[i + kBodiesAhead]->prefetchValidation();
+        if (i + kBodiesAhead < bodies().size()) bodies()[i + kBodiesAhead]->prefetchDynamics(m_validationOn);
         RigidBody* b = bodies()[i];
         if (b->dying() || b->pendingRemoval) continue;
         b->getDynamics().updateInertia();
@@ -370,7 +370,7 @@ void PhysicsScene::step(float dt) {
 
     // 8. A step that produced NaN or Inf (absurd forces) is undone; otherwise it is the new valid state.
     for (size_t i = 0; m_validationOn && i < bodies().size(); ++i) {
-        if (i + kBodiesAhead < bodies().size()) bodies()[i + kBodiesAhead]->prefetchValidation();
+        if (i + kBodiesAhead < bodies().size()) bodies()[i + kBodiesAhead]->prefetchDynamics(true);
         RigidBody* b = bodies()[i];
         if (b->dying() || b->pendingRemoval || b->asleep()) continue;
         b->acceptState("after a step");

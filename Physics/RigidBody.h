@@ -210,10 +210,11 @@ public:
     int solverSlot = -1;
     // Asks for the lines the solver's write-back and the scene's acceptance of it touch here: the fields
     // from projectedBy to solverSlot, declared together for that (ContactResolution.cpp).
-    // Asks for what validation reads and copies (acceptState): the dynamics and the last valid copy of them.
-    void prefetchValidation() const {
+    // Asks for the dynamics (what the step's edit pass reads) and, when validation runs, the last valid copy
+    // acceptState compares them with and copies them into.
+    void prefetchDynamics(bool lastValidToo) const {
         prefetchLines(&m_dyn, sizeof(m_dyn));
-        prefetchLines(&m_lastValid, sizeof(m_lastValid));
+        if (lastValidToo) prefetchLines(&m_lastValid, sizeof(m_lastValid));
     }
     void prefetchSolverState() const {
         const char* from = reinterpret_cast<const char*>(&projectedBy);
