@@ -73,15 +73,17 @@ void ContactBlocks::prepare(std::vector<Manifold>& manifolds, const std::vector<
         const Lanes baseK = block.invMassA + block.invMassB;
         for (int i = 0; i < block.points; ++i) {
             const Vec3 *point[kLanes], *dirs[3][kLanes];
-            Lanes presence; // 1 in the lanes whose manifold has this point
+            Vec3 tangents[kLanes][2]; // (made here, not kept with the points: the manifolds stream faster)
+            Lanes presence;           // 1 in the lanes whose manifold has this point
             for (int l = 0; l < kLanes; ++l) {
                 const int k = block.manifold[l];
                 const bool here = k >= 0 && i < manifolds[size_t(k)].count;
                 const ManifoldPoint* p = here ? &manifolds[size_t(k)].points[i] : nullptr;
                 point[l] = p ? &p->point : &zeroVector;
                 dirs[0][l] = p ? &p->normal : &zeroVector;
-                dirs[1][l] = p ? &p->tangent[0] : &zeroVector;
-                dirs[2][l] = p ? &p->tangent[1] : &zeroVector;
+                if (p && block.friction) tangentBasis(p->normal, tangents[l]);
+                dirs[1][l] = p ? &tangents[l][0] : &zeroVector;
+                dirs[2][l] = p ? &tangents[l][1] : &zeroVector;
                 if (here) presence.setLane(l, 1);
             }
             const LaneMask present = less(zero, presence);

@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 
 namespace physics {
 
@@ -130,7 +131,6 @@ void ContactSolver::buildManifolds(const CollisionContact* contacts, size_t coun
         Manifold& m = m_manifolds[pair.manifold];
         ManifoldPoint p;
         p.normal = n;
-        tangentBasis(n, p.tangent);
         p.depth = std::max(0.0f, c.depth);
         // The two touching surface points: a's reaches depth/2 past the contact point along n, b's as far
         // back.
@@ -191,7 +191,6 @@ void ContactSolver::keepPoints(const SolverBodyAccess& access) {
                 continue; // touching again is the detector's to report; too far apart or slid off: broken
             ManifoldPoint p = o;
             p.normal = n;
-            tangentBasis(n, p.tangent);
             p.point = 0.5f * (onA + onB);
             m.points[m.count++] = p;
         }
@@ -244,10 +243,18 @@ void ContactSolver::matchPreviousImpulses() {
             // (warm-started, it threw a ball chased by a kinematic paddle back at the paddle).
             if (!match || match->bounced) continue;
             p.normalImpulse = match->normalImpulse;
-            Vec3 friction =
-                match->tangent[0] * match->tangentImpulse[0] + match->tangent[1] * match->tangentImpulse[1];
-            p.tangentImpulse[0] = friction.dot(p.tangent[0]);
-            p.tangentImpulse[1] = friction.dot(p.tangent[1]);
+            // The old friction impulse, in the new point's tangent basis (each basis is its normal's).
+            Vec3 was[2], now[2];
+            tangentBasis(match->normal, was);
+            if (std::memcmp(p.normal.data(), match->normal.data(), sizeof(p.normal)) == 0) { // (bit for bit)
+                now[0] = was[0];
+                now[1] = was[1];
+            } else {
+                tangentBasis(p.normal, now);
+            }
+            const Vec3 friction = was[0] * match->tangentImpulse[0] + was[1] * match->tangentImpulse[1];
+            p.tangentImpulse[0] = friction.dot(now[0]);
+            p.tangentImpulse[1] = friction.dot(now[1]);
         }
     }
 }

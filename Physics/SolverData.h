@@ -41,12 +41,12 @@ struct SolverBody {
 
 struct ManifoldPoint {
     Vec3 normal = Vec3::UnitY();                         // from body a toward body b
-    Vec3 tangent[2] = {Vec3::UnitX(), Vec3::UnitZ()};    // a fixed basis derived from the normal
     Vec3 anchorA = Vec3::Zero(), anchorB = Vec3::Zero(); // the touching surface points, in each root's frame
     Vec3 point = Vec3::Zero(); // the contact point (world) at the step's start, midway between the two
     float depth = 0;           // overlap as the detector reported it (the four deepest are kept)
-    // (Its rows - the normal and the tangents: arms, turns, effective masses - are the contact blocks', from
-    // the solve's start to the next step's: ContactBlocks::normalRow.)
+    // (Its rows - the normal and the tangents, which tangentBasis makes from the normal: arms, turns,
+    // effective masses - are the contact blocks', from the solve's start to the next step's:
+    // ContactBlocks::normalRow.)
     Real normalImpulse = 0, tangentImpulse[2] = {0, 0}; // accumulated, per sub-step
     Real approachSpeed = 0;    // v_n when the solve began (negative: approaching), for restitution
     Real forceSpeed = 0;       // what this step's forces added to v_n (a_n dt)
