@@ -33,6 +33,7 @@ set(GUARDIAN_PHYSICS_SOURCES
   RigidBody.cpp
   Rope.cpp
   SceneDebugDraw.cpp
+  SceneIntegration.cpp
   SceneSwitches.cpp
   ShockPropagation.cpp
   SoftBody.cpp)
