@@ -6,6 +6,6 @@ set(GUARDIAN_COLLISION_SOURCES
   SeparationBound.cpp SpaceShapeCast.cpp SpaceCastObstacles.cpp SpaceSnapshot.cpp DynamicTree.cpp SweepAndPrune.cpp TreeBroadphase.cpp
   SpaceDebugDraw.cpp SpaceWake.cpp SpaceGather.cpp)
 set(GUARDIAN_COLLISION_HEADERS
-  Shapes.h BoxAxes.h FetchAhead.h VectorRegister.h PoseInputs.h Narrowphase.h ManifoldReduce.h CollisionGeometry.h SimpleCollisionSpace.h Broadphase.h
+  Shapes.h BoxAxes.h FetchAhead.h VectorRegister.h PoseInputs.h Narrowphase.h ManifoldReduce.h CollisionGeometry.h SpaceEntry.h SimpleCollisionSpace.h Broadphase.h
   DynamicTree.h SweepAndPrune.h TreeBroadphase.h)
 list(TRANSFORM GUARDIAN_COLLISION_SOURCES PREPEND ${CMAKE_CURRENT_LIST_DIR}/)
