@@ -114,10 +114,17 @@ void ContactSolver::orderByLevel() {
     for (size_t j = 0; j < m_shock.size(); ++j)
         if (keep[j]) m_shock[kept++] = m_shock[j];
     m_shock.resize(kept);
+    // Their points' normal rows, read out of the lanes once: the sub-steps' passes all use them.
+    m_shockRows.resize(4 * kept);
+    for (size_t j = 0; j < kept; ++j) {
+        const Manifold& m = m_manifolds[m_shock[j].first];
+        for (int i = 0; i < m.count; ++i) m_shockRows[4 * j + size_t(i)] = m_blocks.normalRow(m, i);
+    }
 }
 
 void ContactSolver::propagateShock(Real h) {
-    for (const auto& [k, upperIsB] : m_shock) {
+    for (size_t j = 0; j < m_shock.size(); ++j) {
+        const auto& [k, upperIsB] = m_shock[j];
         Manifold& m = m_manifolds[k];
         SolverBody &a = m_bodies[size_t(m.a)], &b = m_bodies[size_t(m.b)];
         SolverBody& upper = upperIsB ? b : a;
@@ -128,11 +135,8 @@ void ContactSolver::propagateShock(Real h) {
         // Each point's gap at these poses, as the velocity sweep just used it (nothing has moved since, and
         // the pass moves no body: it holds for both passes).
         Real gaps[4];
-        NormalRow rows[4];
-        for (int i = 0; i < m.count; ++i) {
-            gaps[i] = std::max(Real(0), m_blocks.gap(m, i));
-            rows[i] = m_blocks.normalRow(m, i);
-        }
+        for (int i = 0; i < m.count; ++i) gaps[i] = std::max(Real(0), m_blocks.gap(m, i));
+        const NormalRow* rows = &m_shockRows[4 * j];
         for (int pass = 0; pass < 2; ++pass) // a box's corners: twice, like the normal passes
             for (int i = 0; i < m.count; ++i) {
                 ManifoldPoint& p = m.points[i];
