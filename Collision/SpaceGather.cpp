@@ -159,14 +159,19 @@ bool SimpleCollisionSpace::gatherEntry(Entry& e, bool continuous) {
         c.prevIsPose = false;
         return false;
     }
-    const RBDynamics* d = body ? &body->getDynamics() : nullptr;
+    // Its body's dynamics, as found at the last call while the geometry has kept that body since (binding it
+    // again changes the shape version): then the body itself is not read, a cache line a geometry
+    // (iRigidBody.h: getDynamics() names the same RBDynamics for the body's lifetime).
+    const unsigned version = g->shapeVersion();
+    const RBDynamics* d = !body                                                       ? nullptr
+                          : body == e.body && c.dynamics && c.shapeVersion == version ? c.dynamics
+                                                                                      : &body->getDynamics();
     const bool rootKnown = m_linksUnchanged && c.rootIsSelf && c.dynamics == d;
     c.dynamics = d;
     // Its root: itself when it had no parent at the last call and no attachment changed since (known without
     // reading the links).
     const RBDynamics* root = d && !rootKnown ? d->attachmentRoot() : d;
     c.rootIsSelf = d && root == d;
-    const unsigned version = g->shapeVersion();
     bool same = c.valid && e.body == body && c.shapeVersion == version; // never for a plane
     c.reposed = !same;
     if (!(same && c.raw && root == d && c.rawInputs.same(*d))) {
@@ -368,7 +373,6 @@ void SimpleCollisionSpace::gatherEntries(bool continuous) {
             fetchAhead(g);
             if (ahead.cache.reposed)
                 for (int offset : {64, 128}) fetchAhead(g + offset);
-            fetchAhead(ahead.body);
             if (const char* d = reinterpret_cast<const char*>(ahead.cache.dynamics)) {
                 // Its pose, type, sleeping and teleports: its first 104 bytes (RBDynamics.h). (A third line,
                 // where the body's allocation puts them across three, made no difference.)

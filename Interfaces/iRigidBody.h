@@ -2,7 +2,9 @@
 //
 // The simulator's RigidBody implements it (CreateRigidBody), and so does a game's own class in the
 // collision-only route: a collision geometry reads position, com, orientation, velocity and physicsType from
-// getDynamics(), which must therefore be current whenever populateContactList() runs.
+// getDynamics(), which must therefore be current whenever populateContactList() runs, and the same object
+// for the body's whole life (a space keeps the reference between calls while a geometry stays bound to the
+// body, and reads it without asking the body again).
 #pragma once
 
 #include <algorithm>
