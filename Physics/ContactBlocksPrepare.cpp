@@ -40,9 +40,8 @@ Lanes3 selectLanes3(LaneMask where, const Lanes3& yes, const Lanes3& no) {
 } // namespace
 
 // ContactSolver::prepare's rows, a block's lanes at a time, the same arithmetic in the same order: r from
-// each centre of mass, r x d, I^-1 (r x d), the effective mass 1 / (1/m_a + 1/m_b + (r_a x d) I_a^-1 (r_a x
-// d) +
-// ...), and the approach speed along the normal.
+// each centre of mass, r x d, I^-1 (r x d), the effective mass 1 / (1/m_a + 1/m_b + (r_a x d) I_a^-1
+// (r_a x d) + ...), and the approach speed along the normal.
 void ContactBlocks::prepare(std::vector<Manifold>& manifolds, const std::vector<SolverBody>& bodies, Real h) {
     static const Mat3 zeroMatrix = Mat3::Zero();
     static const Vec3 zeroVector = Vec3::Zero();

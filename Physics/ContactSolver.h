@@ -280,8 +280,8 @@ private:
     };
     std::vector<Kinematic> m_kinematic; // this step's kinematic bodies and their paths
     std::vector<std::pair<size_t, bool>> m_shock;
-    std::vector<NormalRow>
-        m_shockRows; // four per m_shock entry: its points' normal rows (fixed for the step)
+    // Four per m_shock entry: its points' normal rows, read out of the lanes once a step.
+    std::vector<NormalRow> m_shockRows;
     static constexpr Real kHeavyRatio = 10.0f; // shock propagation acts under a body this much heavier
     static constexpr Real kSupportCos = 0.5f;  // ... that rests on it: their normal within 60 degrees of up
     // The soft contact for the current sub-step length: the world's, and a manifold's own (stiffer for a

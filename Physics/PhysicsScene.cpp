@@ -15,9 +15,6 @@ namespace physics {
 namespace {
 // Passes over every body ask for the lines of the body this many places ahead (Prefetch.h).
 constexpr size_t kBodiesAhead = 4;
-} // namespace
-
-namespace {
 constexpr int MAX_STEP_RATE = 10000;
 } // namespace
 

@@ -208,14 +208,14 @@ public:
     bool hasComposite = false;
     // Its index among the contact solver's bodies while the solver moves it through this step (-1: not).
     int solverSlot = -1;
-    // Asks for the lines the solver's write-back and the scene's acceptance of it touch here: the fields
-    // from projectedBy to solverSlot, declared together for that (ContactResolution.cpp).
     // Asks for the dynamics (what the step's edit pass reads) and, when validation runs, the last valid copy
     // acceptState compares them with and copies them into.
     void prefetchDynamics(bool lastValidToo) const {
         prefetchLines(&m_dyn, sizeof(m_dyn));
         if (lastValidToo) prefetchLines(&m_lastValid, sizeof(m_lastValid));
     }
+    // Asks for the lines the solver's write-back and the scene's acceptance of it touch here: the fields
+    // from projectedBy to solverSlot, declared together for that (ContactResolution.cpp).
     void prefetchSolverState() const {
         const char* from = reinterpret_cast<const char*>(&projectedBy);
         prefetchLines(from, size_t(reinterpret_cast<const char*>(&solverSlot + 1) - from));

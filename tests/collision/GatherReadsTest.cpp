@@ -20,7 +20,7 @@ using MakeSpace = iCollisionSpace* (*)();
 iCollisionSpace* readsSimpleSpace() { return CreateSimpleCollisionSpace(); }
 iCollisionSpace* readsOctreeSpace() { return CreateOctreeCollisionSpace(); }
 
-// A row of unit boxes 1.5 m apart, each touching none; and one more touching the first.
+// A row of unit boxes 3 m apart, each touching none; and one more overlapping the first by 0.1 m.
 void stillCallAsksNoBody(MakeSpace make) {
     iCollisionSpace* space = make();
     std::vector<UserBody*> bodies;
