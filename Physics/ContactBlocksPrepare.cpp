@@ -33,6 +33,25 @@ Lanes3 gatherVectors(const Vec3* v[kLanes]) {
     for (int l = 0; l < kLanes; ++l) setLanes3(out, l, *v[l]);
     return out;
 }
+// The lanes' bodies' factors L (BodyFactor), and L^T a.
+struct LanesFactor {
+    Lanes l00, l10, l11, l20, l21, l22;
+};
+LanesFactor gatherFactors(const BodyFactor* f[kLanes]) {
+    LanesFactor out;
+    for (int l = 0; l < kLanes; ++l) {
+        out.l00.setLane(l, f[l]->l00);
+        out.l10.setLane(l, f[l]->l10);
+        out.l11.setLane(l, f[l]->l11);
+        out.l20.setLane(l, f[l]->l20);
+        out.l21.setLane(l, f[l]->l21);
+        out.l22.setLane(l, f[l]->l22);
+    }
+    return out;
+}
+Lanes3 transposedTimes(const LanesFactor& f, const Lanes3& a) {
+    return {f.l00 * a.x + (f.l10 * a.y + f.l20 * a.z), f.l11 * a.y + f.l21 * a.z, f.l22 * a.z};
+}
 Lanes3 selectLanes3(LaneMask where, const Lanes3& yes, const Lanes3& no) {
     return {select(where, yes.x, no.x), select(where, yes.y, no.y), select(where, yes.z, no.z)};
 }
@@ -41,7 +60,8 @@ Lanes3 selectLanes3(LaneMask where, const Lanes3& yes, const Lanes3& no) {
 
 // ContactSolver::prepare's rows, a block's lanes at a time, the same arithmetic in the same order: r from
 // each centre of mass, r x d, I^-1 (r x d), the effective mass 1 / (1/m_a + 1/m_b + (r_a x d) I_a^-1
-// (r_a x d) + ...), and the approach speed along the normal.
+// (r_a x d) + ...), and the approach speed along the normal; the rows keep r x d in the bodies' scaled spin
+// coordinates, L^T (r x d) (BodyFactor).
 void ContactBlocks::prepare(std::vector<Manifold>& manifolds, const std::vector<SolverBody>& bodies, Real h) {
     static const Mat3 zeroMatrix = Mat3::Zero();
     static const Vec3 zeroVector = Vec3::Zero();
@@ -49,12 +69,15 @@ void ContactBlocks::prepare(std::vector<Manifold>& manifolds, const std::vector<
     for (size_t j = 0; j < m_count; ++j) {
         ContactBlock& block = m_blocks[j];
         const Mat3 *ia[kLanes], *ib[kLanes];
+        const BodyFactor *fa[kLanes], *fb[kLanes];
         const Vec3 *ca[kLanes], *cb[kLanes], *va[kLanes], *wa[kLanes], *vb[kLanes], *wb[kLanes];
         for (int l = 0; l < kLanes; ++l) {
             const int k = block.manifold[l];
             if (k >= 0) manifolds[size_t(k)].load = std::numeric_limits<Real>::lowest();
             const SolverBody* a = k >= 0 ? &bodies[size_t(manifolds[size_t(k)].a)] : nullptr;
             const SolverBody* b = k >= 0 ? &bodies[size_t(manifolds[size_t(k)].b)] : nullptr;
+            fa[l] = &m_factor[size_t(block.read[0][l])];
+            fb[l] = &m_factor[size_t(block.read[1][l])];
             ia[l] = a ? &a->invInertia : &zeroMatrix;
             ib[l] = b ? &b->invInertia : &zeroMatrix;
             ca[l] = a ? &a->com : &zeroVector;
@@ -65,6 +88,7 @@ void ContactBlocks::prepare(std::vector<Manifold>& manifolds, const std::vector<
             wb[l] = b ? &b->w : &zeroVector;
         }
         const Lanes33 invA = gatherMatrices(ia), invB = gatherMatrices(ib);
+        const LanesFactor factorA = gatherFactors(fa), factorB = gatherFactors(fb);
         const Lanes3 comA = gatherVectors(ca), comB = gatherVectors(cb);
         const Lanes3 velA = gatherVectors(va), spinA = gatherVectors(wa), velB = gatherVectors(vb),
                      spinB = gatherVectors(wb);
@@ -99,14 +123,16 @@ void ContactBlocks::prepare(std::vector<Manifold>& manifolds, const std::vector<
                 const Lanes mass = select(andMask(keep, less(zero, k)), one / k, zero);
                 BlockRow& row = q.row[r];
                 row.dir = selectLanes3(keep, d, Lanes3{});
-                row.armA = selectLanes3(keep, armA, Lanes3{});
-                row.armB = selectLanes3(keep, armB, Lanes3{});
-                row.turnA = selectLanes3(keep, turnA, Lanes3{});
-                row.turnB = selectLanes3(keep, turnB, Lanes3{});
+                row.armA = selectLanes3(keep, transposedTimes(factorA, armA), Lanes3{});
+                row.armB = selectLanes3(keep, transposedTimes(factorB, armB), Lanes3{});
                 row.mass = mass;
+                if (r == 0) { // the approach in world terms (the spins are the bodies' own here)
+                    const Lanes3 armNA = selectLanes3(keep, armA, Lanes3{}),
+                                 armNB = selectLanes3(keep, armB, Lanes3{});
+                    q.approach = (dot(row.dir, velB - velA) + dot(armNB, spinB)) - dot(armNA, spinA);
+                }
             }
             const BlockRow& n = q.row[0];
-            q.approach = (dot(n.dir, velB - velA) + dot(n.armB, spinB)) - dot(n.armA, spinA);
             // The approach kept with the point (restitution), and the load it carried last step with the
             // manifold (the soft contact: ContactSolver::contactSoftness), while the mass is at hand.
             for (int l = 0; l < kLanes; ++l) {

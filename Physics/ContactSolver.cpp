@@ -339,7 +339,7 @@ void ContactSolver::moveBodies(Real h) {
         SolverBody& b = m_bodies[i];
         if (!movable(b)) continue;
         const Vec3 vSolved = m_blocks.savedVelocity(i), wSolved = m_blocks.savedSpin(i);
-        Vec3 push = m_blocks.velocity(i) - vSolved, turn = m_blocks.spin(i) - wSolved;
+        Vec3 push = m_blocks.velocity(i) - vSolved, turn = m_blocks.spinSinceSaved(i);
         const Real speed = push.norm();
         if (speed > cap) {
             const Real scale = cap / speed;

@@ -36,8 +36,8 @@ unsigned long long boxPile() {
 
 // The committed results: g++ and clang++ (x86-64, Debian 12) agree, in every build type: SSE2 arithmetic,
 // no FMA contraction (-ffp-contract=off), and scene code that draws its random numbers in a stated order.
-constexpr unsigned long long kShootingHash = 0xbe70777355af1666ull;
-constexpr unsigned long long kBoxPileHash = 0x7a530b7dcac0d78aull;
+constexpr unsigned long long kShootingHash = 0x58afd2d1bdff73eaull;
+constexpr unsigned long long kBoxPileHash = 0x673d06ce185c4bb0ull;
 
 } // namespace
 

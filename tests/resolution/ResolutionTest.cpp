@@ -264,6 +264,25 @@ TEST(Resolution, AMovingKinematicBodyPushesADynamicOne) {
     EXPECT_GT(crate->position.x, pusher->position.x + 0.9f); // pushed ahead, not overlapped
 }
 
+TEST(Resolution, ASpinningKinematicTurntableCarriesABoxRoundAtOmegaR) {
+    // A kinematic disc-like slab turning at 1 rad/s about y, a box resting 1 m from the axis: the needed
+    // centripetal pull, w^2 r = 1 m/s^2, is under mu g = 4.9 m/s^2, so friction spins the box up (in about
+    // 0.2 s) and it rides round at w r = 1 m/s, 1 m out. The slab's spin reaches the box only through the
+    // contact rows' speeds (the solver's scaled spin for an immovable body: BodyFactor).
+    SceneFixture f;
+    RBDynamics* table = f.world->box(Vector(0, 0, 0), Vector(2, 0.25f, 2), 1.0f)->getDynamics();
+    table->mass = INFINITE_MASS;
+    table->physicsType = PHYS_Floating;
+    table->angularVelocity = Vector(0, 1, 0);
+    RBDynamics* box = f.world->box(Vector(1, 0.35f, 0), Vector(0.1f, 0.1f, 0.1f), 1.0f)->getDynamics();
+    f.seconds(3.0f);
+    const float radius = std::hypot(box->position.x, box->position.z);
+    EXPECT_NEAR(radius, 1.0f, 0.03f);
+    EXPECT_NEAR(std::hypot(box->velocity.x, box->velocity.z), 1.0f * radius, 0.03f);
+    EXPECT_NEAR(box->angularVelocity.y, 1.0f, 0.03f);   // it turns with the table
+    EXPECT_NEAR(table->angularVelocity.y, 1.0f, 1e-6f); // unaffected
+}
+
 TEST(Resolution, SolverKnobsRefuseBadValuesAndKeepTheirSetting) {
     SceneFixture f;
     ASSERT_EQ(settingsOf(f.scene)->getSolverIterations(), 10);
