@@ -278,7 +278,10 @@ TEST(JointScenes, RagdollJointsStayWithinTheKnownBoundAtEveryStep) {
 // worst; corners 2.9 and 6.4 cm below the floor (g++; clang's AVX build: 1.3 and 2.9 cm, 3.1 and 6.4). Before
 // the step closed the joints of what its projection and continuous stage move alone (JointClosing.h): 8.6
 // and 13.7 cm apart, 3.2 and 8.6 cm below. Asserted: those measured bounds, with room for the spread
-// (compilers differ here: a different rounding anywhere lands a ragdoll another way).
+// (compilers differ here: a different rounding anywhere lands a ragdoll another way). The lowest corner of
+// the worst start is a tail: over starts 1 to 60 the worst was 8.7 cm (g++) and 6.4 cm (clang AVX) before
+// 4ba9f54, 9.4 and 8.5 cm after it (the medians 3.1-3.4 cm throughout), and 4ba9f54's clang AVX build has
+// its 8.5 cm among the twelve: the worst is held to 10 cm.
 namespace {
 int gThrowSeed = 0;
 void buildThrownRagdoll(World& w) {
@@ -318,7 +321,7 @@ TEST(JointScenes, RagdollThrownFromTwelveStartsKeepsItsJointsWithinTheKnownBound
     EXPECT_LT(0.5f * (g[5] + g[6]), 0.02f);
     EXPECT_LT(g.back(), 0.04f);
     EXPECT_GT(0.5f * (l[5] + l[6]), -0.045f);
-    EXPECT_GT(l.front(), -0.08f);
+    EXPECT_GT(l.front(), -0.10f);
 }
 
 // The wrecking ball (500 kg on ten 0.5 kg links, let go 60 degrees out) swings through the wall of boxes at
