@@ -7,6 +7,7 @@
 // snapshot (a listener detached meanwhile is not called), a body whose geometry was unbound (it died) gets
 // no further calls and is not passed as `other`, and geometry removal/deletion waits until the calls end.
 // Then contacts whose geometry was removed or deleted, or whose body changed, are dropped.
+#include "GrowingStorage.h"
 #include "SimpleCollisionSpace.h"
 #include "iCollisionListener.h"
 #include "iRigidBody.h"
@@ -40,7 +41,7 @@ void SimpleCollisionSpace::notifyListeners(const std::vector<Notice>& notices) {
     std::sort(m_bodyPairs.begin(), m_bodyPairs.end(), [](const BodyPair& a, const BodyPair& b) {
         return a.lo != b.lo ? a.lo < b.lo : a.hi != b.hi ? a.hi < b.hi : a.index < b.index;
     });
-    m_repeat.assign(notices.size(), 0);
+    gcol::assignGrowing(m_repeat, notices.size(), decltype(m_repeat)::value_type(0));
     for (size_t i = 1; i < m_bodyPairs.size(); ++i) {
         const BodyPair &p = m_bodyPairs[i], &q = m_bodyPairs[i - 1];
         if (p.lo == q.lo && p.hi == q.hi) m_repeat[p.index] = 1; // a repeat: the first one listed stays

@@ -19,6 +19,7 @@
 // from its start and end matrices (motionBound: no quaternions, no poses) clears the slow ones; then, only
 // for a body that moved more than a quarter of a shape's smallest dimension, its shapes against the obstacles
 // in its swept bounds, a few times.
+#include "GrowingStorage.h"
 #include "MathEigen.h"
 #include "SimpleCollisionSpace.h"
 #include "iRigidBody.h"
@@ -109,7 +110,7 @@ size_t SimpleCollisionSpace::sweepBodies(BodySweep* sweeps, size_t count) {
     // its sweep, if any, in O(1), with nothing sorted.
     size_t slots = 16;
     while (slots < 2 * count) slots *= 2;
-    m_sweepIndex.assign(slots, std::make_pair(nullptr, -1));
+    gcol::assignGrowing(m_sweepIndex, slots, std::pair<const void*, int>(nullptr, -1));
     const auto slotOf = [&](const void* root) {
         std::uint64_t x = std::uint64_t(reinterpret_cast<std::uintptr_t>(root)) * 0x9e3779b97f4a7c15ull;
         size_t slot = size_t(x >> 32) & (slots - 1);
@@ -117,7 +118,7 @@ size_t SimpleCollisionSpace::sweepBodies(BodySweep* sweeps, size_t count) {
         return slot;
     };
     m_sweepMotion.resize(count);
-    m_mayPass.assign(count, 0);
+    gcol::assignGrowing(m_mayPass, count, (unsigned char)0);
     for (size_t i = 0; i < count; ++i) {
         sweeps[i].fraction = 1.0f;
         sweeps[i].hit = nullptr;
@@ -137,7 +138,7 @@ size_t SimpleCollisionSpace::sweepBodies(BodySweep* sweeps, size_t count) {
     // turns out fast (most steps: none).
     m_cast.clear();
     std::vector<int>& perSweep = m_castOrder; // first used as a count per sweep
-    perSweep.assign(count + 1, 0);
+    gcol::assignGrowing(perSweep, count + 1, 0);
     for (CollisionGeometry* g : m_members) {
         // Written in place (a copy from the stack was read back before its stores had left), taken back when
         // the geometry takes no part.
@@ -177,7 +178,7 @@ size_t SimpleCollisionSpace::sweepBodies(BodySweep* sweeps, size_t count) {
         m_sweepRange[i] = std::make_pair(next, next);
         next += perSweep[i];
     }
-    m_castOrder.assign(size_t(next), 0);
+    gcol::assignGrowing(m_castOrder, size_t(next), 0);
     for (size_t j = 0; j < m_cast.size(); ++j)
         if (m_cast[j].sweep >= 0)
             m_castOrder[size_t(m_sweepRange[size_t(m_cast[j].sweep)].second++)] = int(j);
@@ -187,7 +188,7 @@ size_t SimpleCollisionSpace::sweepBodies(BodySweep* sweeps, size_t count) {
         m_sweepShift[i] =
             sweeps[i].body ? sweeps[i].body->getDynamics().position - sweeps[i].startPosition : Vector();
     size_t hits = 0;
-    m_sweepHits.assign(count, SweepHit());
+    gcol::assignGrowing(m_sweepHits, count, SweepHit());
     m_obstaclesIndexed = false; // built by the first fast sweep (most calls have none)
     for (size_t i = 0; i < count; ++i) {
         if (!sweeps[i].body || !m_mayPass[i]) continue;
@@ -302,7 +303,7 @@ void SimpleCollisionSpace::sweepOne(BodySweep& sweep, int index) {
     m_moving.clear();
     castShapesAt(index, sweep.startPosition, sweep.startOrientation);
     const size_t nm = m_moving.size(), no = m_obstacles.size();
-    m_ignored.assign(nm * no, 0);
+    gcol::assignGrowing(m_ignored, nm * no, (unsigned char)0);
     // Pairs the layer rule filters out never touch (a bullet leaving its shooter).
     for (size_t i = 0; i < nm; ++i)
         for (size_t j = 0; j < no; ++j) {

@@ -1,6 +1,7 @@
 // ContactBlocks.cpp - packing manifolds into blocks of kLanes, and the wide sweeps (ContactBlocks.h). The
 // arithmetic per lane is ContactSolver's scalar arithmetic, in the same order.
 #include "ContactBlocks.h"
+#include "GrowingStorage.h"
 #include "SolverRows.h"
 
 #include <algorithm>
@@ -172,7 +173,7 @@ void ContactBlocks::pack(std::vector<Manifold>& manifolds, const std::vector<Sol
         m_used.reserve(m_blocks.capacity());
         m_nextOpen.reserve(m_blocks.capacity());
     }
-    m_lastBlock.assign(bodies.size(), -1);
+    assignGrowing(m_lastBlock, bodies.size(), -1);
     for (size_t k = 0; k < manifolds.size(); ++k) {
         Manifold& m = manifolds[k];
         const bool moveA = movable(bodies[size_t(m.a)]), moveB = movable(bodies[size_t(m.b)]);
@@ -411,7 +412,10 @@ void ContactBlocks::solve(const std::vector<SolverBody>& bodies, const Sweep& sw
     }
 }
 
-void ContactBlocks::saveVelocities() { m_saved.assign(m_velocity.begin(), m_velocity.end()); }
+void ContactBlocks::saveVelocities() {
+    reserveGrowing(m_saved, m_velocity.size());
+    m_saved.assign(m_velocity.begin(), m_velocity.end());
+}
 
 void ContactBlocks::restoreVelocities() { std::copy(m_saved.begin(), m_saved.end(), m_velocity.begin()); }
 

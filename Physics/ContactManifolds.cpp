@@ -2,6 +2,7 @@
 // points each), last step's points that came apart by a hair kept, and each point matched with last step's
 // point at the same place so that it starts from that point's impulses (warm starting).
 #include "ContactSolver.h"
+#include "GrowingStorage.h"
 #include "SolverRows.h"
 
 #include "MathEigen.h"
@@ -38,11 +39,12 @@ void ContactSolver::buildManifolds(const CollisionContact* contacts, size_t coun
     // Room to spare (this list and last step's swap every step): a warm scene whose pair count wanders a
     // little above any it had does not allocate each time it does.
     const size_t room = m_last.size() + m_last.size() / 2 + 16;
-    if (m_manifolds.capacity() < room) m_manifolds.reserve(room);
-    if (m_dormant.capacity() < m_last.size()) m_dormant.reserve(room); // last step's that rest, at most all
+    reserveGrowing(m_manifolds, room);
+    if (m_dormant.capacity() < m_last.size())
+        reserveGrowing(m_dormant, room); // last step's that rest, at most all
     FlatMap<PairKey, size_t, PairKeyHash>& current = m_current;
     current.clear();
-    m_lastNow.assign(m_last.size(), -1);
+    assignGrowing(m_lastNow, m_last.size(), -1);
     m_lastCursor = 0;
     m_maxDepthBefore = 0;
     constexpr size_t kNone = ~size_t(0);

@@ -21,6 +21,7 @@
 // the integrator's g dt^2: a ball that stayed in the solve one step after each bounce rose 1 mm (0.1 %) a
 // bounce.
 #include "ContactSolver.h"
+#include "GrowingStorage.h"
 #include "SolverRows.h"
 
 #include <algorithm>
@@ -100,9 +101,9 @@ void ContactSolver::projectDeepOverlaps() {
     // Each manifold's deepest overlap when it was last measured, and when (a clock that ticks at every
     // measure and every move); each body's last move. A manifold neither of whose bodies moved since it was
     // measured has the same gaps: it had nothing to project then and has nothing now, and its deepest holds.
-    m_pairDeepest.assign(m_manifolds.size(), 0.0f);
-    m_pairMeasured.assign(m_manifolds.size(), 0);
-    m_bodyMoved.assign(m_bodies.size(), 0);
+    assignGrowing(m_pairDeepest, m_manifolds.size(), 0.0f);
+    assignGrowing(m_pairMeasured, m_manifolds.size(), 0u);
+    assignGrowing(m_bodyMoved, m_bodies.size(), 0u);
     unsigned clock = 0;
     const auto movedSince = [&](const Manifold& m, size_t k) {
         return m_bodyMoved[size_t(m.a)] > m_pairMeasured[k] || m_bodyMoved[size_t(m.b)] > m_pairMeasured[k];

@@ -25,6 +25,7 @@
 // its masses), a heavy load is what it cannot hold. Sliders and springs let their anchors part: a chain ends
 // at one. A tether too slack to come taut within a sub-step is off for it.
 #include "ContactSolver.h"
+#include "GrowingStorage.h"
 #include "Joint.h"
 #include "SolverRows.h"
 
@@ -65,7 +66,7 @@ void ContactSolver::tetherJoints() {
             node(j->slotB);
         }
     const size_t nodes = m_nodeSlot.size();
-    m_jointStart.assign(nodes + 1, 0);
+    assignGrowing(m_jointStart, nodes + 1, 0);
     for (const Joint* j : m_solvedJoints)
         if (std::isfinite(j->reach())) {
             ++m_jointStart[size_t(m_node[size_t(j->slotA)]) + 1];
@@ -83,7 +84,7 @@ void ContactSolver::tetherJoints() {
     // Breadth first from every chain start (a joint from an immovable body to a movable one): each body keeps
     // the first kTethersPerBody chains that reach it, no chain twice (a bridge pinned at both ends: both).
     constexpr int K = kTethersPerBody;
-    m_reach.assign(nodes * K, Reach{});
+    assignGrowing(m_reach, nodes * K, Reach{});
     m_reachQueue.clear();
     // r reaches node v, which is heavy when kTetherRatio times heavier than the lightest body above it.
     auto label = [&](int v, Reach r) {

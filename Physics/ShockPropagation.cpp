@@ -16,6 +16,7 @@
 // level (two boxes side by side on the floor) and bodies that touch nothing immovable (a crowd in the air,
 // two spheres meeting) are left alone.
 #include "ContactSolver.h"
+#include "GrowingStorage.h"
 #include "SolverRows.h"
 
 #include <algorithm>
@@ -37,15 +38,16 @@ void ContactSolver::orderByLevel() {
         }))
         return;
     const int n = int(m_bodies.size());
-    m_level.assign(size_t(n), INT_MAX);
+    assignGrowing(m_level, size_t(n), INT_MAX);
     // Each body's manifolds, as one list per body in one array (m_touching[m_touchStart[i] ..]).
-    m_touchStart.assign(size_t(n) + 1, 0);
+    assignGrowing(m_touchStart, size_t(n) + 1, 0);
     for (const Manifold& m : m_manifolds) {
         ++m_touchStart[size_t(m.a) + 1];
         ++m_touchStart[size_t(m.b) + 1];
     }
     for (int i = 0; i < n; ++i) m_touchStart[size_t(i) + 1] += m_touchStart[size_t(i)];
     m_touching.resize(2 * m_manifolds.size());
+    reserveGrowing(m_scratch, m_touchStart.size() - 1);
     m_scratch.assign(m_touchStart.begin(), m_touchStart.end() - 1); // next free place per body
     for (size_t k = 0; k < m_manifolds.size(); ++k) {
         m_touching[size_t(m_scratch[size_t(m_manifolds[k].a)]++)] = int(k);
@@ -101,8 +103,8 @@ void ContactSolver::orderByLevel() {
     // 210-box pyramid jittering above the sleep speed: awake for 10 s instead of asleep within 2.
     std::vector<char>& carries = m_carries;
     std::vector<char>& keep = m_keep;
-    carries.assign(m_bodies.size(), 0);
-    keep.assign(m_shock.size(), 0);
+    assignGrowing(carries, m_bodies.size(), char(0));
+    assignGrowing(keep, m_shock.size(), char(0));
     for (size_t j = m_shock.size(); j-- > 0;) { // from the top down
         const Manifold& m = m_manifolds[m_shock[j].first];
         const int upper = m_shock[j].second ? m.b : m.a, lower = m_shock[j].second ? m.a : m.b;

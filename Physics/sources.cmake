@@ -55,5 +55,6 @@ set(GUARDIAN_PHYSICS_HEADERS
   JointRows.h
   MathBridge.h
   PhysicsScene.h
-  RigidBody.h)
+  RigidBody.h
+  GrowingStorage.h)
 list(TRANSFORM GUARDIAN_PHYSICS_SOURCES PREPEND ${CMAKE_CURRENT_LIST_DIR}/)

@@ -9,6 +9,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdio>
+
 using namespace resolution_test;
 
 namespace {
@@ -59,4 +61,26 @@ TEST(StepAllocation, APyramidFallingAsleepDoesNotAllocate) {
     const long made = guardian_test::allocationCount() - before;
     ASSERT_TRUE(top->sleeping) << "it did not fall asleep in 10 s";
     EXPECT_EQ(made, 0) << "asleep after " << steps << " more steps";
+}
+
+TEST(StepAllocation, AWaveWakingSixtyFourDominoesAllocatesLogarithmicallyOften) {
+    // A row of 64 dominoes falls asleep; the first is pushed and the wave wakes them one after another over
+    // 15 s, so the steps' working arrays (bodies swept, bodies and manifolds solved, contact pairs) reach a
+    // new largest size again and again. Each grows geometrically, as push_back does (GrowingStorage.h): a
+    // handful of allocations each over the wave, 87 in all. Before, vector::assign(n, value) and reserve(n)
+    // reallocated to exactly n at every new size: 395 (the manifold list alone 126).
+    SceneFixture f(4);
+    buildDominoes(*f.world, 64);
+    RBDynamics* first = f.world->bodies().front()->getDynamics();
+    first->velocity = first->angularVelocity = first->angularMomentum = Vector();
+    f.seconds(3.0f);
+    const RBDynamics* last = f.world->bodies().back()->getDynamics();
+    ASSERT_TRUE(first->sleeping && last->sleeping) << "the row must rest before the push";
+    first->ApplyImpulse(Vector(0.6f, 0, 0), first->position + Vector(0, 0.45f, 0));
+    const long before = guardian_test::allocationCount();
+    f.seconds(15.0f);
+    const long allocations = guardian_test::allocationCount() - before;
+    std::printf("a wave through 64 dominoes: %ld allocations\n", allocations);
+    EXPECT_LT(last->position.y, 0.4f) << "the wave must reach the last domino";
+    EXPECT_LE(allocations, 150);
 }
