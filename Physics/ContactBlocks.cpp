@@ -1,5 +1,5 @@
-// ContactBlocks.cpp - packing manifolds into blocks of kLanes, and the wide sweeps (ContactBlocks.h). The
-// arithmetic per lane is ContactSolver's scalar arithmetic, in the same order.
+// ContactBlocks.cpp - packing manifolds into blocks of kLanes, the bodies' scaled spin coordinates, and the
+// wide sweeps (ContactBlocks.h).
 #include "ContactBlocks.h"
 #include "GrowingStorage.h"
 #include "SolverRows.h"

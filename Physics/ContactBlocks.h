@@ -3,11 +3,12 @@
 // sharing a movable body, their rows in structure-of-arrays form; the bodies' velocities in one flat array,
 // gathered into lanes for a block and scattered back after it (as Box2D v3's and Jolt's solvers do).
 //
-// Each lane does what the scalar solve did for its manifold, operation for operation (Lanes.h), and the
-// packing keeps, for every movable body, the order in which its manifolds are solved (pack()): manifolds
-// that share no movable body commute, so the wide sweep gives the very bits of the sequential one (the
-// committed determinism hashes did not change). Immovable bodies (the static world, fixed and kinematic
-// bodies) are read but never written, so any number of lanes may share one.
+// Each lane solves its manifold as a sequential sweep would, operation for operation (Lanes.h; the spins in
+// each body's scaled coordinates, BodyFactor), and the packing keeps, for every movable body, the order in
+// which its manifolds are solved (pack()): manifolds that share no movable body commute, so the wide sweep
+// gives the very bits of the sequential one, at four lanes or eight (the determinism hashes are the same in
+// both builds). Immovable bodies (the static world, fixed and kinematic bodies) are read but never written,
+// so any number of lanes may share one.
 // The rows themselves (directions, arms, effective masses) are worked out by ContactSolver::prepare into
 // the lanes pack() gave each manifold, and stay here until the next step's pack() (restitution and shock
 // propagation read the normal rows here: normalRow); the impulses live here from pack() to unpack() (the
