@@ -7,7 +7,7 @@
 // snapshot (a listener detached meanwhile is not called), a body whose geometry was unbound (it died) gets
 // no further calls and is not passed as `other`, and geometry removal/deletion waits until the calls end.
 // Then contacts whose geometry was removed or deleted, or whose body changed, are dropped.
-#include "GrowingStorage.h"
+#include "GrowingArrays.h"
 #include "SimpleCollisionSpace.h"
 #include "iCollisionListener.h"
 #include "iRigidBody.h"

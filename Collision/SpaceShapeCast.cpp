@@ -19,7 +19,7 @@
 // from its start and end matrices (motionBound: no quaternions, no poses) clears the slow ones; then, only
 // for a body that moved more than a quarter of a shape's smallest dimension, its shapes against the obstacles
 // in its swept bounds, a few times.
-#include "GrowingStorage.h"
+#include "GrowingArrays.h"
 #include "MathEigen.h"
 #include "SimpleCollisionSpace.h"
 #include "iRigidBody.h"

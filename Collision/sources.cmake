@@ -7,5 +7,5 @@ set(GUARDIAN_COLLISION_SOURCES
   SpaceDebugDraw.cpp SpaceWake.cpp SpaceGather.cpp)
 set(GUARDIAN_COLLISION_HEADERS
   Shapes.h BoxAxes.h FetchAhead.h VectorRegister.h PoseInputs.h Narrowphase.h ManifoldReduce.h CollisionGeometry.h SpaceEntry.h SimpleCollisionSpace.h Broadphase.h
-  DynamicTree.h SweepAndPrune.h TreeBroadphase.h GrowingStorage.h)
+  DynamicTree.h SweepAndPrune.h TreeBroadphase.h GrowingArrays.h)
 list(TRANSFORM GUARDIAN_COLLISION_SOURCES PREPEND ${CMAKE_CURRENT_LIST_DIR}/)

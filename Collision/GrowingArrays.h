@@ -1,8 +1,8 @@
-// GrowingStorage.h - working arrays that a step or a call sizes anew, grown geometrically as push_back
+// GrowingArrays.h - working arrays that a step or a call sizes anew, grown geometrically as push_back
 // grows them. vector::assign(n, value) and reserve(n) allocate exactly n when n outgrows the storage, so an
 // array whose size creeps up (a pile forming, a wave of bodies waking) allocated at every new largest
-// size; these allocate a logarithmic number of times (StepAllocation.*). (Physics/ and Collision/ each
-// have this header: the packages ship apart.)
+// size; these allocate a logarithmic number of times (StepAllocation.*). (Physics/GrowingStorage.h is the
+// simulator's own copy: the two modules meet only through Interfaces/, and the packages ship apart.)
 #pragma once
 
 #include <algorithm>
