@@ -3,6 +3,7 @@
 // point at the same place so that it starts from that point's impulses (warm starting).
 #include "ContactSolver.h"
 #include "GrowingStorage.h"
+#include "Prefetch.h"
 #include "SolverRows.h"
 
 #include "MathEigen.h"
@@ -22,6 +23,25 @@ namespace {
 // static world's are world points.
 Vec3 localAnchor(const SolverBody& b, const Vec3& world) {
     return b.root ? Vec3(b.startRotation.conjugate() * (world - b.startOrigin)) : world;
+}
+// The geometries of contacts[i] and their bodies' dynamics, asked for in three stages a few contacts apart
+// (each stage reads only what the stage before brought in): at 10,000 bodies they lie in memory apart from
+// each other and from the contact list, and waiting for them was 60 % of collecting the manifolds (perf).
+void fetchAhead(const CollisionContact* contacts, size_t count, size_t i) {
+    constexpr size_t kGeometry = 24, kBody = 16, kDynamics = 8; // contacts ahead; a pair lists about 4
+    if (i + kGeometry < count) {
+        prefetchLines(contacts[i + kGeometry].g1, 256);
+        prefetchLines(contacts[i + kGeometry].g2, 256);
+    }
+    auto body = [](iCollisionGeometry* g) { return g ? g->getRigidBody() : nullptr; };
+    if (i + kBody < count && (i == 0 || contacts[i + kBody].g2 != contacts[i + kBody - 1].g2)) {
+        if (iRigidBody* rb = body(contacts[i + kBody].g1)) prefetchLines(rb, 64);
+        if (iRigidBody* rb = body(contacts[i + kBody].g2)) prefetchLines(rb, 64);
+    }
+    if (i + kDynamics < count && (i == 0 || contacts[i + kDynamics].g2 != contacts[i + kDynamics - 1].g2)) {
+        if (iRigidBody* rb = body(contacts[i + kDynamics].g1)) prefetchLines(&rb->getDynamics(), 256);
+        if (iRigidBody* rb = body(contacts[i + kDynamics].g2)) prefetchLines(&rb->getDynamics(), 256);
+    }
 }
 } // namespace
 
@@ -86,6 +106,7 @@ void ContactSolver::buildManifolds(const CollisionContact* contacts, size_t coun
         size_t manifold = kNone; // its place in m_manifolds, once it has one
     } pair;
     for (size_t i = 0; contacts && i < count; ++i) {
+        fetchAhead(contacts, count, i);
         const CollisionContact& c = contacts[i];
         if (!c.g1 || !c.g2) continue;
         if (c.g1 != pair.g1 || c.g2 != pair.g2) {
