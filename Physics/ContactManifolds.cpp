@@ -171,7 +171,7 @@ void ContactSolver::buildManifolds(const CollisionContact* contacts, size_t coun
             if (shallowest->depth < p.depth) *shallowest = p;
         }
     }
-    keepPoints(access);
+    carryOver(access);
 }
 
 int ContactSolver::previousManifold(const iCollisionGeometry* g1, const iCollisionGeometry* g2) {
@@ -187,17 +187,21 @@ int ContactSolver::previousManifold(const iCollisionGeometry* g1, const iCollisi
     return int(i);
 }
 
-// A collision detector reports only touching points, so a resting box that rocks by a hair loses the
-// corners that lifted, stands on the others for a step, and rocks back: the contacts flicker and the warm
-// start is lost with them. Like a persistent manifold (Bullet's contact breaking threshold), a pair still
-// touching keeps last step's points that came apart by less than keepDistance, each with its impulses. Such
-// a point is speculative: it holds only once its gap closes (see solveContacts), so it never pulls and never
-// stops a body short of touching.
-void ContactSolver::keepPoints(const SolverBodyAccess& access) {
-    if (m_settings.keepDistance <= 0.0f) return;
+// What carries over from a pair's manifold of last step, read once for both (at 10,000 bodies it comes from
+// memory; asked for two manifolds ahead):
+//  - A collision detector reports only touching points, so a resting box that rocks by a hair loses the
+//    corners that lifted, stands on the others for a step, and rocks back: the contacts flicker and the warm
+//    start is lost with them. Like a persistent manifold (Bullet's contact breaking threshold), a pair still
+//    touching keeps last step's points that came apart by less than keepDistance, each with its impulses.
+//    Such a point is speculative: it holds only once its gap closes (see solveContacts), so it never pulls
+//    and never stops a body short of touching.
+//  - Each point starts from the impulses of last step's point at the same place (matchImpulses).
+void ContactSolver::carryOver(const SolverBodyAccess& access) {
+    const bool keeping = m_settings.keepDistance > 0.0f, warm = m_settings.warmStart;
     const Real keep = m_settings.keepDistance, match2 = m_settings.matchDistance * m_settings.matchDistance;
     // Appends to m the points of old that m lacks and that are apart by less than keep.
     auto keepFrom = [&](const Manifold& old, Manifold& m) {
+        if (!keeping) return;
         const SolverBody &a = m_bodies[m.a], &b = m_bodies[m.b];
         const Vec3 n = m.count ? m.points[0].normal : old.points[0].normal;
         const int reportedCount = m.count;
@@ -217,9 +221,18 @@ void ContactSolver::keepPoints(const SolverBodyAccess& access) {
             p.point = 0.5f * (onA + onB);
             m.points[m.count++] = p;
         }
+        if (warm) matchImpulses(old, m);
     };
-    for (Manifold& m : m_manifolds)
-        if (m.previous >= 0) keepFrom(m_last[size_t(m.previous)], m);
+    for (size_t j = 0; j < m_manifolds.size(); ++j) {
+        if (j + 2 < m_manifolds.size() && m_manifolds[j + 2].previous >= 0)
+            prefetchLines(&m_last[size_t(m_manifolds[j + 2].previous)], sizeof(Manifold));
+        Manifold& m = m_manifolds[j];
+        if (m.previous < 0) continue;
+        const Manifold& old = m_last[size_t(m.previous)];
+        keepFrom(old, m);
+        if (warm && !keeping) matchImpulses(old, m);
+    }
+    if (!keeping) return;
     // A pair the detector no longer reports at all (lifted by a hair) keeps its points for one step; a pair
     // at rest (an island asleep: the detector skips it) keeps its manifold unsolved until it wakes.
     m_dormant.clear();
@@ -245,40 +258,37 @@ void ContactSolver::keepPoints(const SolverBodyAccess& access) {
     }
 }
 
-void ContactSolver::matchPreviousImpulses() {
+// The old point at the same place on body a gives each point of m its impulses (warm starting).
+void ContactSolver::matchImpulses(const Manifold& old, Manifold& m) const {
     const Real best0 = m_settings.matchDistance * m_settings.matchDistance;
-    for (Manifold& m : m_manifolds) {
-        if (!m_settings.warmStart || m.previous < 0) continue;
-        const Manifold& old = m_last[size_t(m.previous)];
-        for (int i = 0; i < m.count; ++i) {
-            ManifoldPoint& p = m.points[i];
-            // The old point at the same place on body a.
-            const ManifoldPoint* match = nullptr;
-            Real best = best0;
-            for (int j = 0; j < old.count; ++j) {
-                Real d2 = (old.points[j].anchorA - p.anchorA).squaredNorm();
-                if (d2 <= best) {
-                    best = d2;
-                    match = &old.points[j];
-                }
+    for (int i = 0; i < m.count; ++i) {
+        ManifoldPoint& p = m.points[i];
+        // The old point at the same place on body a.
+        const ManifoldPoint* match = nullptr;
+        Real best = best0;
+        for (int j = 0; j < old.count; ++j) {
+            Real d2 = (old.points[j].anchorA - p.anchorA).squaredNorm();
+            if (d2 <= best) {
+                best = d2;
+                match = &old.points[j];
             }
-            // A point that bounced left the surface: its impulse was an impact's, not a load to start from
-            // (warm-started, it threw a ball chased by a kinematic paddle back at the paddle).
-            if (!match || match->bounced) continue;
-            p.normalImpulse = match->normalImpulse;
-            // The old friction impulse, in the new point's tangent basis (each basis is its normal's).
-            Vec3 was[2], now[2];
-            tangentBasis(match->normal, was);
-            if (std::memcmp(p.normal.data(), match->normal.data(), sizeof(p.normal)) == 0) { // (bit for bit)
-                now[0] = was[0];
-                now[1] = was[1];
-            } else {
-                tangentBasis(p.normal, now);
-            }
-            const Vec3 friction = was[0] * match->tangentImpulse[0] + was[1] * match->tangentImpulse[1];
-            p.tangentImpulse[0] = friction.dot(now[0]);
-            p.tangentImpulse[1] = friction.dot(now[1]);
         }
+        // A point that bounced left the surface: its impulse was an impact's, not a load to start from
+        // (warm-started, it threw a ball chased by a kinematic paddle back at the paddle).
+        if (!match || match->bounced) continue;
+        p.normalImpulse = match->normalImpulse;
+        // The old friction impulse, in the new point's tangent basis (each basis is its normal's).
+        Vec3 was[2], now[2];
+        tangentBasis(match->normal, was);
+        if (std::memcmp(p.normal.data(), match->normal.data(), sizeof(p.normal)) == 0) { // (bit for bit)
+            now[0] = was[0];
+            now[1] = was[1];
+        } else {
+            tangentBasis(p.normal, now);
+        }
+        const Vec3 friction = was[0] * match->tangentImpulse[0] + was[1] * match->tangentImpulse[1];
+        p.tangentImpulse[0] = friction.dot(now[0]);
+        p.tangentImpulse[1] = friction.dot(now[1]);
     }
 }
 

@@ -114,14 +114,12 @@ void ContactSolver::collect(const CollisionContact* contacts, size_t count, cons
     m_bodies.clear();
     m_bodyIndex.clear();
     buildManifolds(contacts, count, access);
-    matchPreviousImpulses();
     enterJoints(access);
 }
 
 void ContactSolver::recollect(const CollisionContact* contacts, size_t count,
                               const SolverBodyAccess& access) {
     buildManifolds(contacts, count, access);
-    matchPreviousImpulses();
 }
 
 void ContactSolver::dropManifolds() { m_manifolds.clear(); }

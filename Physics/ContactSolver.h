@@ -178,8 +178,8 @@ private:
     void buildManifolds(const CollisionContact* contacts, size_t count, const SolverBodyAccess& access);
     // Last step's manifold of a pair (an index into m_last; -1: none).
     int previousManifold(const iCollisionGeometry* g1, const iCollisionGeometry* g2);
-    void keepPoints(const SolverBodyAccess& access);
-    void matchPreviousImpulses();
+    void carryOver(const SolverBodyAccess& access); // kept points and warm-start impulses from m_last
+    void matchImpulses(const Manifold& old, Manifold& m) const;
     void storeImpulses();
     // JointStage.cpp
     bool joinedWithoutContact(const RBDynamics* a, const RBDynamics* b) const;
