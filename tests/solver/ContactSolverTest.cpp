@@ -8,6 +8,8 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <utility>
+#include <vector>
 
 using namespace solver_test;
 using physics::ContactSolver;
@@ -301,4 +303,42 @@ TEST(ContactSolver, ACornerThatLiftedByAHairIsKeptAndHoldsOnlyOnceItsGapCloses) 
     EXPECT_GT(tipReported, 0.1f); // rad/s: on the reported edge alone the box starts to tip
     RecordProperty("tip_rad_per_s_kept", std::to_string(tipKept));
     RecordProperty("tip_rad_per_s_reported_only", std::to_string(tipReported));
+}
+
+TEST(ContactSolver, ContactsWithoutBothGeometriesAreSkipped) {
+    // A space of the game's own may list a contact with a null geometry: it is no contact, and the solve of
+    // a list holding such entries among real ones equals, bit for bit, the solve of the real ones alone.
+    // (Long enough for collecting the manifolds to look ahead past the null entries.)
+    auto run = [](bool withNulls) {
+        Pair p;
+        p.a.d.physicsType = PHYS_FixedInSpace;
+        p.b.d.mass = 2.0f;
+        p.b.d.setInertiaTensor(getBoxInertiaTensor(2.0f, Vector(0.5f, 0.5f, 0.5f)));
+        p.b.d.position = Vector(0, 0.5f, 0);
+        p.b.d.velocity = Vector(1, -kG * kDt, 0.2f);
+        std::vector<CollisionContact> list;
+        const CollisionContact none{Vector(), Vector(0, 1, 0), 0.0f, nullptr, nullptr};
+        for (int k = 0; k < 40; ++k) {
+            if (withNulls) {
+                CollisionContact half = none;
+                half.g1 = (k % 2) ? &p.ga : nullptr;
+                half.g2 = (k % 2) ? nullptr : &p.gb;
+                list.push_back(k % 3 ? half : none);
+            }
+            if (k % 10 == 0) // the four corners of the bottom face, spread along the list
+                list.push_back(contact(p.ga, p.gb,
+                                       Vector(k < 20 ? -0.5f : 0.5f, 0, (k / 10) % 2 ? 0.5f : -0.5f),
+                                       Vector(0, 1, 0), 0.001f));
+        }
+        ContactSolver solver;
+        solver.solve(list.data(), list.size(), kDt, SolverBodyAccess(physics::Vec3(0, -kG * kDt, 0)));
+        return std::make_pair(p.b.d.velocity, p.b.d.angularVelocity);
+    };
+    const auto clean = run(false), mixed = run(true);
+    EXPECT_NEAR(clean.first.y, 0.0f, 1e-3f); // the corners held the box up
+    EXPECT_LT(clean.first.x, 1.0f);          // and their friction slowed it
+    for (float Vector::*axis : {&Vector::x, &Vector::y, &Vector::z}) {
+        EXPECT_EQ(clean.first.*axis, mixed.first.*axis);
+        EXPECT_EQ(clean.second.*axis, mixed.second.*axis);
+    }
 }
