@@ -29,9 +29,10 @@ Vec3 localAnchor(const SolverBody& b, const Vec3& world) {
 // each other and from the contact list, and waiting for them was 60 % of collecting the manifolds (perf).
 void fetchAhead(const CollisionContact* contacts, size_t count, size_t i) {
     constexpr size_t kGeometry = 24, kBody = 16, kDynamics = 8; // contacts ahead; a pair lists about 4
-    if (i + kGeometry < count) // (a contact without both geometries is skipped: nothing to ask for)
-        for (const iCollisionGeometry* g : {contacts[i + kGeometry].g1, contacts[i + kGeometry].g2})
-            if (g) prefetchLines(g, 256);
+    if (i + kGeometry < count) { // (either may be null: prefetchLines then does nothing)
+        prefetchLines(contacts[i + kGeometry].g1, 256);
+        prefetchLines(contacts[i + kGeometry].g2, 256);
+    }
     auto body = [](iCollisionGeometry* g) { return g ? g->getRigidBody() : nullptr; };
     if (i + kBody < count && (i == 0 || contacts[i + kBody].g2 != contacts[i + kBody - 1].g2)) {
         if (iRigidBody* rb = body(contacts[i + kBody].g1)) prefetchLines(rb, 64);

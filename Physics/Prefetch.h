@@ -8,9 +8,11 @@
 
 namespace physics {
 
-// The cache lines of [p, p + bytes).
+// The cache lines of [p, p + bytes); nothing for a null p (an offset from it is undefined, and a caller
+// asking ahead may meet one: a game's space can list a contact without its geometry).
 inline void prefetchLines(const void* p, std::size_t bytes) {
 #if defined(__GNUC__) || defined(__clang__)
+    if (!p) return;
     const char* at = static_cast<const char*>(p);
     for (std::size_t offset = 0; offset < bytes; offset += 64) __builtin_prefetch(at + offset);
 #else
