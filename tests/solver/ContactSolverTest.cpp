@@ -24,6 +24,15 @@ struct Pair {
     Geometry ga{&a}, gb{&b};
 };
 
+// b: a unit box of mass m on a, a fixed floor, its centre 0.5 m up, moving at v.
+void boxOnFloor(Pair& p, float m, const Vector& v) {
+    p.a.d.physicsType = PHYS_FixedInSpace;
+    p.b.d.mass = m;
+    p.b.d.setInertiaTensor(getBoxInertiaTensor(m, Vector(0.5f, 0.5f, 0.5f)));
+    p.b.d.position = Vector(0, 0.5f, 0);
+    p.b.d.velocity = v;
+}
+
 } // namespace
 
 TEST(ContactSolver, HeadOnCollisionMatchesTheRestitutionLaw) {
@@ -69,13 +78,9 @@ TEST(ContactSolver, FrictionTakesMuTimesTheNormalImpulse) {
     // A box resting on a fixed floor, sliding at 1 m/s, after gravity acted for one step (v_y = -g dt).
     // Holding it up takes a normal impulse m g dt, so Coulomb friction removes mu g dt of sliding speed.
     Pair p;
-    p.a.d.physicsType = PHYS_FixedInSpace;
+    boxOnFloor(p, 2.0f, Vector(1, -kG * kDt, 0));
     p.a.d.friction = 0.2f;
     p.b.d.friction = 0.3f; // the seed's rule: mu = 0.2 + 0.3
-    p.b.d.mass = 2.0f;
-    p.b.d.setInertiaTensor(getBoxInertiaTensor(2.0f, Vector(0.5f, 0.5f, 0.5f)));
-    p.b.d.position = Vector(0, 0.5f, 0);
-    p.b.d.velocity = Vector(1, -kG * kDt, 0);
     // Four corner points of the bottom face (no tipping: the torques cancel).
     CollisionContact cs[4];
     int i = 0;
@@ -269,11 +274,7 @@ TEST(ContactSolver, ACornerThatLiftedByAHairIsKeptAndHoldsOnlyOnceItsGapCloses) 
     // tip over the reported edge.
     auto run = [](float keepDistance, size_t& points) {
         Pair p;
-        p.a.d.physicsType = PHYS_FixedInSpace;
-        p.b.d.mass = 1.0f;
-        p.b.d.setInertiaTensor(getBoxInertiaTensor(1.0f, Vector(0.5f, 0.5f, 0.5f)));
-        p.b.d.position = Vector(0, 0.5f, 0);
-        p.b.d.velocity = Vector(0, -kG * kDt, 0);
+        boxOnFloor(p, 1.0f, Vector(0, -kG * kDt, 0));
         ContactSolver solver;
         physics::SolverSettings s;
         s.keepDistance = keepDistance;
@@ -311,11 +312,7 @@ TEST(ContactSolver, ContactsWithoutBothGeometriesAreSkipped) {
     // (Long enough for collecting the manifolds to look ahead past the null entries.)
     auto run = [](bool withNulls) {
         Pair p;
-        p.a.d.physicsType = PHYS_FixedInSpace;
-        p.b.d.mass = 2.0f;
-        p.b.d.setInertiaTensor(getBoxInertiaTensor(2.0f, Vector(0.5f, 0.5f, 0.5f)));
-        p.b.d.position = Vector(0, 0.5f, 0);
-        p.b.d.velocity = Vector(1, -kG * kDt, 0.2f);
+        boxOnFloor(p, 2.0f, Vector(1, -kG * kDt, 0.2f));
         std::vector<CollisionContact> list;
         const CollisionContact none{Vector(), Vector(0, 1, 0), 0.0f, nullptr, nullptr};
         for (int k = 0; k < 40; ++k) {
