@@ -33,15 +33,15 @@ void fetchAhead(const CollisionContact* contacts, size_t count, size_t i) {
         prefetchLines(contacts[i + kGeometry].g1, 256);
         prefetchLines(contacts[i + kGeometry].g2, 256);
     }
+    // The bodies only where a new pair starts (a pair's contacts follow one another).
+    auto startsPair = [&](size_t j) { return j < count && contacts[j].g2 != contacts[j - 1].g2; };
     auto body = [](iCollisionGeometry* g) { return g ? g->getRigidBody() : nullptr; };
-    if (i + kBody < count && (i == 0 || contacts[i + kBody].g2 != contacts[i + kBody - 1].g2)) {
-        if (iRigidBody* rb = body(contacts[i + kBody].g1)) prefetchLines(rb, 64);
-        if (iRigidBody* rb = body(contacts[i + kBody].g2)) prefetchLines(rb, 64);
-    }
-    if (i + kDynamics < count && (i == 0 || contacts[i + kDynamics].g2 != contacts[i + kDynamics - 1].g2)) {
-        if (iRigidBody* rb = body(contacts[i + kDynamics].g1)) prefetchLines(&rb->getDynamics(), 256);
-        if (iRigidBody* rb = body(contacts[i + kDynamics].g2)) prefetchLines(&rb->getDynamics(), 256);
-    }
+    if (startsPair(i + kBody))
+        for (iCollisionGeometry* g : {contacts[i + kBody].g1, contacts[i + kBody].g2})
+            if (iRigidBody* rb = body(g)) prefetchLines(rb, 64);
+    if (startsPair(i + kDynamics))
+        for (iCollisionGeometry* g : {contacts[i + kDynamics].g1, contacts[i + kDynamics].g2})
+            if (iRigidBody* rb = body(g)) prefetchLines(&rb->getDynamics(), 256);
 }
 } // namespace
 
@@ -201,7 +201,6 @@ void ContactSolver::carryOver(const SolverBodyAccess& access) {
     const Real keep = m_settings.keepDistance, match2 = m_settings.matchDistance * m_settings.matchDistance;
     // Appends to m the points of old that m lacks and that are apart by less than keep.
     auto keepFrom = [&](const Manifold& old, Manifold& m) {
-        if (!keeping) return;
         const SolverBody &a = m_bodies[m.a], &b = m_bodies[m.b];
         const Vec3 n = m.count ? m.points[0].normal : old.points[0].normal;
         const int reportedCount = m.count;
@@ -221,7 +220,6 @@ void ContactSolver::carryOver(const SolverBodyAccess& access) {
             p.point = 0.5f * (onA + onB);
             m.points[m.count++] = p;
         }
-        if (warm) matchImpulses(old, m);
     };
     for (size_t j = 0; j < m_manifolds.size(); ++j) {
         if (j + 2 < m_manifolds.size() && m_manifolds[j + 2].previous >= 0)
@@ -229,8 +227,8 @@ void ContactSolver::carryOver(const SolverBodyAccess& access) {
         Manifold& m = m_manifolds[j];
         if (m.previous < 0) continue;
         const Manifold& old = m_last[size_t(m.previous)];
-        keepFrom(old, m);
-        if (warm && !keeping) matchImpulses(old, m);
+        if (keeping) keepFrom(old, m);
+        if (warm) matchImpulses(old, m);
     }
     if (!keeping) return;
     // A pair the detector no longer reports at all (lifted by a hair) keeps its points for one step; a pair
@@ -254,6 +252,7 @@ void ContactSolver::carryOver(const SolverBodyAccess& access) {
         m.b = bodyIndex(old.rootB, access);
         m.previous = int(i);
         keepFrom(old, m);
+        if (warm) matchImpulses(old, m);
         if (m.count > 0) m_manifolds.push_back(m);
     }
 }
