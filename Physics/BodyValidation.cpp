@@ -24,16 +24,38 @@ const wchar_t* checkOrientation(Matrix& o) {
     }
     return L"orientation is not a rotation (scaled, sheared or reflected)";
 }
+
+// What a step writes (the motion), and what it never does (the settings): a state whose settings are the last
+// accepted ones needs only the first checked (checkMotion).
+bool motionFinite(const RBDynamics& d) {
+    const Vector* vectors[] = {&d.position,        &d.velocity,        &d.lastVelocity,  &d.temporalForce,
+                               &d.angularVelocity, &d.angularMomentum, &d.temporalTorque};
+    for (const Vector* v : vectors)
+        if (!v->isFinite()) return false;
+    return true;
+}
+
+bool settingsFinite(const RBDynamics& d) {
+    return d.acceleration.isFinite() && d.force.isFinite() && d.com.isFinite() && d.torque.isFinite();
+}
+
+const wchar_t* checkKnownOrientation(RBDynamics& d, const Matrix* const* knownRotations) {
+    const bool known =
+        knownRotations && (d.orientation == *knownRotations[0] || d.orientation == *knownRotations[1]);
+    return known ? nullptr : checkOrientation(d.orientation);
+}
+
+const wchar_t* const kNotFinite = L"a vector property is NaN or infinite";
 } // namespace
+
+const wchar_t* checkMotion(RBDynamics& d, const Matrix* const* knownRotations) {
+    if (!motionFinite(d)) return kNotFinite;
+    return checkKnownOrientation(d, knownRotations);
+}
 
 const wchar_t* checkDynamics(RBDynamics& d, const Matrix& knownInertia, const Matrix& knownInverse,
                              const Matrix* const* knownRotations) {
-    const Vector* vectors[] = {
-        &d.position,       &d.velocity, &d.lastVelocity,    &d.acceleration, &d.force,
-        &d.temporalForce,  &d.com,      &d.angularVelocity, &d.torque,       &d.temporalTorque,
-        &d.angularMomentum};
-    for (const Vector* v : vectors)
-        if (!v->isFinite()) return L"a vector property is NaN or infinite";
+    if (!motionFinite(d) || !settingsFinite(d)) return kNotFinite;
     if (!validMass(d.mass)) return L"mass must be > 0 (or INFINITE_MASS)";
     if (!finite(d.dragCoefficient) || d.dragCoefficient < 0.0f)
         return L"dragCoefficient must be finite, >= 0";
@@ -44,10 +66,7 @@ const wchar_t* checkDynamics(RBDynamics& d, const Matrix& knownInertia, const Ma
     if (!(d.friction >= 0.0f && finite(d.friction))) return L"friction must be finite, >= 0";
     if (d.physicsType != PHYS_Falling && d.physicsType != PHYS_Floating && d.physicsType != PHYS_FixedInSpace)
         return L"physicsType is not a PhysicsType";
-    const bool known =
-        knownRotations && (d.orientation == *knownRotations[0] || d.orientation == *knownRotations[1]);
-    if (!known)
-        if (const wchar_t* why = checkOrientation(d.orientation)) return why;
+    if (const wchar_t* why = checkKnownOrientation(d, knownRotations)) return why;
     if (d.getInertiaTensor() != knownInertia || d.getInverseInertiaTensor() != knownInverse) {
         // Edited through the reference: accept the pair if both are valid and they are each other's inverse,
         // or if the inverse is zero (rotation locked) and the tensor finite.

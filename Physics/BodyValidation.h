@@ -16,4 +16,9 @@ namespace physics {
 const wchar_t* checkDynamics(RBDynamics& d, const Matrix& knownInertia, const Matrix& knownInverse,
                              const Matrix* const* knownRotations = nullptr);
 
+// The part of checkDynamics for what a step writes: position, orientation, the velocities and momentum,
+// the one-step force and torque (the settings - mass, material, constant forces, tensors - unchecked: for a
+// state whose settings are, bit for bit, ones checkDynamics accepted).
+const wchar_t* checkMotion(RBDynamics& d, const Matrix* const* knownRotations);
+
 } // namespace physics

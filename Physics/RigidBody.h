@@ -98,8 +98,9 @@ public:
     // teleport: velocities are kept, no interpolation across it). Unattached bodies only.
     void adoptFrameEdits();
     // Checks the state (cleaning float drift in the orientation); an invalid body is reported with error()
-    // and restored to its last valid state. Returns false when it had to restore.
-    bool validate(const char* when);
+    // and restored to its last valid state. Returns false when it had to restore. motionOnly: the settings
+    // are, bit for bit, the last accepted ones (acceptState): only the motion is checked (checkMotion).
+    bool validate(const char* when, bool motionOnly);
     void snapshotValid() {
         m_lastValid = m_dyn;
         m_lastValidChecked = false;
@@ -112,7 +113,8 @@ public:
     }
     // validate, and on success snapshotValid, as a step does at its start and end; a state that is, bit for
     // bit, the last one this accepted (a body nothing touched since the last step) is accepted as it is,
-    // without the checks or the copy.
+    // without the checks or the copy, and one that differs only in its motion (a step moved it) has only the
+    // motion checked and copied.
     bool acceptState(const char* when);
     // Interpolation: the pose at the start of the step, and the frame write after the steps.
     void recordPreviousPose();

@@ -4,6 +4,7 @@
 #include "PhysicsTestSupport.h"
 #include "iPhysicsFrame.h"
 #include "iPhysicsSceneSettings.h"
+#include "iPhysicsSceneStats.h"
 
 #include <gtest/gtest.h>
 
@@ -17,6 +18,34 @@ using physics_test::SceneHolder;
 namespace {
 
 Matrix diagonal(float d) { return Matrix(d); } // 3x3 block d, m44 = 1
+
+// Every property of RBDynamics written bad, one at a time (a NaN where a number may be anything finite).
+struct BadWrite {
+    const char* name;
+    void (*write)(RBDynamics&, float nan);
+};
+const BadWrite kBadWrites[] = {
+    {"position", [](RBDynamics& x, float n) { x.position.y = n; }},
+    {"velocity", [](RBDynamics& x, float n) { x.velocity.z = n; }},
+    {"lastVelocity", [](RBDynamics& x, float n) { x.lastVelocity.x = n; }},
+    {"acceleration", [](RBDynamics& x, float n) { x.acceleration.y = n; }},
+    {"force", [](RBDynamics& x, float n) { x.force.x = n; }},
+    {"temporalForce", [](RBDynamics& x, float n) { x.temporalForce.z = n; }},
+    {"com", [](RBDynamics& x, float n) { x.com.x = n; }},
+    {"angularVelocity", [](RBDynamics& x, float n) { x.angularVelocity.y = n; }},
+    {"torque", [](RBDynamics& x, float n) { x.torque.x = n; }},
+    {"temporalTorque", [](RBDynamics& x, float n) { x.temporalTorque.y = n; }},
+    {"angularMomentum", [](RBDynamics& x, float n) { x.angularMomentum.z = n; }},
+    {"mass", [](RBDynamics& x, float) { x.mass = -1.0f; }},
+    {"dragCoefficient", [](RBDynamics& x, float) { x.dragCoefficient = -1.0f; }},
+    {"angularDrag", [](RBDynamics& x, float n) { x.angularDrag = n; }},
+    {"restitution", [](RBDynamics& x, float) { x.restitution = 50.0f; }},
+    {"friction", [](RBDynamics& x, float) { x.friction = -1.0f; }},
+    {"physicsType", [](RBDynamics& x, float) { x.physicsType = PhysicsType(7); }},
+    {"orientation", [](RBDynamics& x, float) { x.orientation = Matrix(2); }},
+    {"inertia tensor", [](RBDynamics& x, float) { x.getInertiaTensor() = Matrix(-1); }},
+    {"inverse inertia tensor", [](RBDynamics& x, float) { x.getInverseInertiaTensor() = Matrix(-1); }},
+};
 } // namespace
 
 // A 1 km rock: mass 2.5e12 kg, a solid sphere of radius 500 m, I = 0.4 m r^2 = 2.5e17 kg m^2. Its inverse,
@@ -148,39 +177,12 @@ TEST(BadValues, EachPropertyWrittenBadIntoABodyUnchangedSinceTheLastStepIsRefuse
     d.physicsType = PHYS_Floating; // at rest, no gravity: a step leaves its state as it was
     d.position = Vector(1, 2, 3);
     h.run(100);
-    const float nan = std::numeric_limits<float>::quiet_NaN();
-    struct Edit {
-        const char* name;
-        void (*write)(RBDynamics&, float nan);
-    };
-    const Edit edits[] = {
-        {"position", [](RBDynamics& x, float n) { x.position.y = n; }},
-        {"velocity", [](RBDynamics& x, float n) { x.velocity.z = n; }},
-        {"lastVelocity", [](RBDynamics& x, float n) { x.lastVelocity.x = n; }},
-        {"acceleration", [](RBDynamics& x, float n) { x.acceleration.y = n; }},
-        {"force", [](RBDynamics& x, float n) { x.force.x = n; }},
-        {"temporalForce", [](RBDynamics& x, float n) { x.temporalForce.z = n; }},
-        {"com", [](RBDynamics& x, float n) { x.com.x = n; }},
-        {"angularVelocity", [](RBDynamics& x, float n) { x.angularVelocity.y = n; }},
-        {"torque", [](RBDynamics& x, float n) { x.torque.x = n; }},
-        {"temporalTorque", [](RBDynamics& x, float n) { x.temporalTorque.y = n; }},
-        {"angularMomentum", [](RBDynamics& x, float n) { x.angularMomentum.z = n; }},
-        {"mass", [](RBDynamics& x, float) { x.mass = -1.0f; }},
-        {"dragCoefficient", [](RBDynamics& x, float) { x.dragCoefficient = -1.0f; }},
-        {"angularDrag", [](RBDynamics& x, float n) { x.angularDrag = n; }},
-        {"restitution", [](RBDynamics& x, float) { x.restitution = 50.0f; }},
-        {"friction", [](RBDynamics& x, float) { x.friction = -1.0f; }},
-        {"physicsType", [](RBDynamics& x, float) { x.physicsType = PhysicsType(7); }},
-        {"orientation", [](RBDynamics& x, float) { x.orientation = Matrix(2); }},
-        {"inertia tensor", [](RBDynamics& x, float) { x.getInertiaTensor() = Matrix(-1); }},
-        {"inverse inertia tensor", [](RBDynamics& x, float) { x.getInverseInertiaTensor() = Matrix(-1); }},
-    };
-    for (const Edit& e : edits) {
+    for (const BadWrite& e : kBadWrites) {
         h.run(50); // steps in which nothing changes
         const float mass = d.mass, restitution = d.restitution;
         const Vector position = d.position;
         ErrorRecorder errors;
-        e.write(d, nan);
+        e.write(d, std::numeric_limits<float>::quiet_NaN());
         h.run(20); // one step at least
         EXPECT_EQ(errors.count(), 1u) << e.name;
         EXPECT_NE(ErrorRecorder::last().find(L"invalid rigid body state"), std::wstring::npos) << e.name;
@@ -190,6 +192,41 @@ TEST(BadValues, EachPropertyWrittenBadIntoABodyUnchangedSinceTheLastStepIsRefuse
         EXPECT_EQ(d.position, position) << e.name;
         EXPECT_EQ(d.physicsType, PHYS_Floating) << e.name;
         EXPECT_TRUE(d.velocity.isFinite() && d.angularMomentum.isFinite() && d.com.isFinite()) << e.name;
+        EXPECT_TRUE(isRotation(d.orientation, 1e-4f)) << e.name;
+    }
+    f->Delete();
+}
+
+// A moving body's state differs after every step only in its motion, and only that is checked and kept
+// then (RigidBody::acceptState): every property written bad into a falling, spinning body is still refused
+// and reported once, and the body goes on from the last state a step left, in free fall (v = v0 - g n dt
+// after n steps) and spinning as before.
+TEST(BadValues, EachPropertyWrittenBadIntoAMovingBodyIsRefusedAndItFallsOnFromItsLastStep) {
+    SceneHolder h(60);
+    settingsOf(h.scene)->setSleepingEnabled(false);
+    iPhysicsFrame* f = CreatePhysicsFrame();
+    RBDynamics& d = *f->getDynamics();
+    d.position = Vector(0, 1000, 0);
+    d.angularVelocity = Vector(0, 1, 0); // about a principal axis of its (spherical) inertia: it stays
+    h.run(100);
+    for (const BadWrite& e : kBadWrites) {
+        h.run(50);
+        const float mass = d.mass, restitution = d.restitution, v0 = d.velocity.y, y0 = d.position.y;
+        const long long steps0 = statsOf(h.scene)->getStepCount();
+        ErrorRecorder errors;
+        e.write(d, std::numeric_limits<float>::quiet_NaN());
+        h.run(50);
+        const long long n = statsOf(h.scene)->getStepCount() - steps0;
+        ASSERT_GE(n, 1) << e.name;
+        EXPECT_EQ(errors.count(), 1u) << e.name;
+        EXPECT_NE(ErrorRecorder::last().find(L"invalid rigid body state"), std::wstring::npos) << e.name;
+        EXPECT_EQ(d.mass, mass) << e.name;
+        EXPECT_EQ(d.restitution, restitution) << e.name;
+        EXPECT_EQ(d.physicsType, PHYS_Falling) << e.name;
+        EXPECT_NEAR(d.velocity.y, v0 - kG * float(n) / 60.0f, 1e-3f) << e.name;
+        EXPECT_LT(d.position.y, y0) << e.name;
+        EXPECT_NEAR(d.angularVelocity.y, 1.0f, 1e-4f) << e.name;
+        EXPECT_TRUE(d.position.isFinite() && d.angularMomentum.isFinite() && d.com.isFinite()) << e.name;
         EXPECT_TRUE(isRotation(d.orientation, 1e-4f)) << e.name;
     }
     f->Delete();
