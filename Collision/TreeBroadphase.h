@@ -30,7 +30,10 @@
 
 class TreeBroadphase final : public Broadphase {
 public:
-    static constexpr float kMargin = 0.1f;   // m (times the length unit), fat box margin on every side
+    // m (times the length unit), fat box margin on every side. Bullet's dbvt margin: against 0.1 m, the kept
+    // pairs a call tests again fall from 97,900 to 69,100, the candidate stage of 10,000 boxes moved 1 cm 5 %
+    // faster; a 1,000-sphere rain and box pile cost the same (their moves are the stretch's or inside both).
+    static constexpr float kMargin = 0.05f;
     static constexpr size_t kBulkMoves = 64; // this many moved, and a quarter of all: one rebuild
 
     PairList findPairs(const std::vector<SimpleCollisionSpace::Entry>& entries,

@@ -74,7 +74,7 @@ TEST(OctreeSpace, OnlyABodyThatLeftItsFatBoxQueriesTheTree) {
     Grid grid(500);
     grid.space->populateContactList(1.0f / 60.0f);
     size_t queries = treeOf(grid.space).treeQueries();
-    // Within the margin (0.1 m): no query.
+    // Within the margin: no query.
     grid.bodies[17]->getDynamics().position.y += 0.5f * TreeBroadphase::kMargin;
     grid.space->populateContactList(1.0f / 60.0f);
     EXPECT_EQ(treeOf(grid.space).treeQueries(), queries);
