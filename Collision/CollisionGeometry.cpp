@@ -56,6 +56,7 @@ CollisionGeometry::~CollisionGeometry() {
 void CollisionGeometry::bodyDestroyed(CollisionGeometry& g) {
     g.m_body = nullptr; // the body is going: its dynamics are not touched
     g.m_state.hasPrevious = false;
+    g.edited();
 }
 
 void CollisionGeometry::bind(iRigidBody* rb) {
@@ -72,6 +73,14 @@ void CollisionGeometry::bind(iRigidBody* rb) {
 void CollisionGeometry::shapeChanged() {
     ++m_shapeVersion;
     if (m_body) m_body->getDynamics().setShapeMass(this, shapeMass());
+    edited();
+}
+
+void CollisionGeometry::edited() {
+    std::vector<SpaceEntry>* entries = m_state.entries;
+    const int i = m_state.entry;
+    if (entries && i >= 0 && size_t(i) < entries->size() && (*entries)[size_t(i)].g == this)
+        (*entries)[size_t(i)].cache.mirrored = false;
 }
 
 void CollisionGeometry::joinDefaultSpace(const wchar_t* factory) {

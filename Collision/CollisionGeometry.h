@@ -19,6 +19,7 @@
 #include <vector>
 
 class iRigidBody;
+struct SpaceEntry;
 
 // On a cache line of its own: what a space call reads of every geometry (the filter, the body, the space
 // state's first fields: 56 bytes) is then one line.
@@ -52,17 +53,27 @@ public:
 
     // iCollisionFilter: plain values, read by the space at its next populateContactList.
     // (final: a space reads them for every geometry every call, without a virtual call.)
-    void setLayer(std::uint32_t layerBits) final { m_layer = layerBits; }
+    void setLayer(std::uint32_t layerBits) final {
+        m_layer = layerBits;
+        edited();
+    }
     std::uint32_t getLayer() const final { return m_layer; }
-    void setMask(std::uint32_t maskBits) final { m_mask = maskBits; }
+    void setMask(std::uint32_t maskBits) final {
+        m_mask = maskBits;
+        edited();
+    }
     std::uint32_t getMask() const final { return m_mask; }
-    void setSensor(bool sensor) final { m_sensor = sensor; }
+    void setSensor(bool sensor) final {
+        m_sensor = sensor;
+        edited();
+    }
     bool isSensor() const final { return m_sensor; }
     // A clone filters as its original does.
     void copyFilter(const CollisionGeometry& from) {
         m_layer = from.m_layer;
         m_mask = from.m_mask;
         m_sensor = from.m_sensor;
+        edited();
     }
 
     // The body pose this geometry is at now: false (pose left unset) when the body's dynamics are not
@@ -84,6 +95,7 @@ public:
         int member = -1;                                 // its place among the space's members
         Vector previousOrigin;
         Matrix previousRotation = Matrix(1);
+        std::vector<SpaceEntry>* entries = nullptr; // its space's entries, which edited() tells
     };
     SpaceState& spaceState() { return m_state; }
     const SpaceState& spaceState() const { return m_state; }
@@ -114,6 +126,10 @@ protected:
     void destroy() const;
     // Tells the body the geometry's solid changed (a new radius, a child added).
     void shapeChanged();
+    // Tells its space's entry that what the entry keeps of the geometry (filter, body, shape version, the
+    // space state's previous pose) may have changed: the entry reads the geometry again at the next call
+    // (a call that finds nothing changed does not read it: SpaceGather.cpp, gatherUnchanged).
+    void edited();
 
 private:
     friend class SimpleCollisionSpace; // deletes geometry whose Delete() it deferred

@@ -51,6 +51,7 @@ bool SimpleCollisionSpace::add(iCollisionGeometry* o) {
     st.order = ++m_joined;
     st.listed = m_geometry.insert(m_geometry.end(), o);
     st.member = int(m_members.size());
+    st.entries = &m_entries;
     m_members.push_back(g);
     ++m_membership;
     m_layoutDirty = true;
@@ -194,18 +195,26 @@ void SimpleCollisionSpace::populateContactList(float delta) {
             L"SimpleCollisionSpace: the contact budget (iContactBudget.h) is full; touching pairs beyond it "
             L"are dropped until bodies move apart (reported once)");
     }
-    // Remember this call's poses for the next call's sampling.
+    // Remember this call's poses for the next call's sampling. (A geometry whose space state holds all of it
+    // already, as its entry knows, is not written: a call where nothing moved does not touch the geometry.)
     for (Entry& e : m_entries) {
         if (!e.active) continue;
-        CollisionGeometry::SpaceState& st = e.g->spaceState();
-        st.hasPrevious = true;
-        st.previousBody = e.body;
-        st.previousTeleports = e.teleports;
-        if (!e.cache.prevCurrent) { // (else they hold this pose already)
-            st.previousOrigin = e.origin;
-            st.previousRotation = e.rotation;
+        Entry::Cache& c = e.cache;
+        const bool held = c.prevCurrent && m_mirrors && c.mirrored && c.hadPrevious && c.previousIsBody &&
+                          c.previousTeleports == e.teleports;
+        if (!held) {
+            CollisionGeometry::SpaceState& st = e.g->spaceState();
+            st.hasPrevious = true;
+            st.previousBody = e.body;
+            st.previousTeleports = e.teleports;
+            if (!c.prevCurrent) { // (else they hold this pose already)
+                st.previousOrigin = e.origin;
+                st.previousRotation = e.rotation;
+            }
         }
-        e.cache.prevIsPose = true;
+        c.hadPrevious = c.previousIsBody = true;
+        c.previousTeleports = e.teleports;
+        c.prevIsPose = true;
     }
     carryRestingPairs(); // pairs not tested because both rest still touch
     m_populating = false;

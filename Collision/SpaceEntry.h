@@ -42,11 +42,18 @@ struct alignas(64) SpaceEntry {
         bool sized = false;      // minDim and bound hold for sizedVersion
         bool reposed = false;    // its shapes were made anew at the last call (so probably at this one)
         bool rootIsSelf = false; // dynamics had no parent at the last call
-        unsigned shapeVersion = 0, sizedVersion = 0;
+        // The geometry as the last call left it, so that a call need not read it (gatherUnchanged): its
+        // filter, body and shape version are the entry's (no CollisionGeometry::edited() since), and its
+        // space state's hasPrevious, previousBody == body and previousTeleports are these.
+        bool mirrored = false;
+        bool hadPrevious = false, previousIsBody = false;
+        unsigned previousTeleports = 0;
+        unsigned shapeVersion = 0;
         float bound = 0.0f, selfAngle = 0.0f; // bounding radius; rotationAngle(rotation, rotation)
         // A call where nothing moved reads the entry up to here: its first three cache lines.
         gcol::PoseInputs rawInputs;
         gcol::Aabb tight; // its shapes' box at the pose
+        unsigned sizedVersion = 0;
         int capacity = 0; // shapes m_shapes holds for it from first on
     } cache;
     int first = 0, last = 0;   // its shapes in m_shapes

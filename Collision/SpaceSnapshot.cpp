@@ -73,8 +73,12 @@ bool SimpleCollisionSpace::restoreSnapshot(const iSnapshot* snapshot) {
         st = m.state;
         st.proxy = proxy;
         st.entry = entry;
+        st.entries = &m_entries;
     }
-    for (Entry& e : m_entries) e.cache.prevIsPose = false; // the previous poses are the snapshot's now
+    for (Entry& e : m_entries) { // the previous poses are the snapshot's now, and the space states are
+        e.cache.prevIsPose = false;
+        e.cache.mirrored = false;
+    }
     m_touching = s->touching;
     m_held = s->held;
     m_heldCalls = s->heldCalls;

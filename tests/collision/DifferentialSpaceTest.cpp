@@ -1,6 +1,7 @@
 // DifferentialSpaceTest.cpp - every space against brute force (SpaceDifferential.h) on random scenes, and
 // the octree space against the simple space over many calls with moves, teleports, sleeping, fixing, adds
 // and removes between them.
+#include "SimpleCollisionSpace.h"
 #include "SpaceDifferential.h"
 #include "iOctreeCollisionSpace.h"
 #include "iSimpleCollisionSpace.h"
@@ -62,6 +63,27 @@ TEST(DifferentialSpace, OctreeEqualsSimpleWithoutSampling) {
     auto reference = [] { return CreateSimpleCollisionSpace(0); };
     spacediff::checkAgainstReference(make, reference, Scene::Dense, 4, 200, 40);
 }
+// A space whose entries mirror their geometries (a call reads a geometry only when an edit reached it or its
+// body moved: SpaceGather.cpp, gatherUnchanged) beside one that reads every geometry every call, over calls
+// with moves, teleports, sleeping, fixing, adds, removes, filters, rebinds, resizes and deleted bodies.
+TEST(DifferentialSpace, MirroredEntriesEqualReadingEveryGeometry) {
+    auto reading = [](iCollisionSpace* s) {
+        dynamic_cast<SimpleCollisionSpace&>(*s).setGeometryMirrors(false);
+        return s;
+    };
+    auto simpleReading = [&] { return reading(CreateSimpleCollisionSpace()); };
+    auto octreeReading = [&] { return reading(CreateOctreeCollisionSpace()); };
+    for (Scene scene : {Scene::Sparse, Scene::Dense, Scene::Mixed, Scene::MostlyFixed})
+        for (unsigned seed = 1; seed <= 3; ++seed) {
+            spacediff::checkAgainstReference(makeSimple, simpleReading, scene, seed, 150, 60, true, true);
+            spacediff::checkAgainstReference(makeOctree, octreeReading, scene, seed, 150, 60, true, true);
+        }
+    auto withoutSampling = [] { return CreateSimpleCollisionSpace(0); };
+    auto readingWithoutSampling = [&] { return reading(CreateSimpleCollisionSpace(0)); };
+    spacediff::checkAgainstReference(withoutSampling, readingWithoutSampling, Scene::Dense, 4, 150, 60, true,
+                                     true);
+}
+
 // The simple space answering every other call's queries in a batch (boxes kept from the batch's start, exact
 // tests only where a query meets one) beside itself answering every query by brute force.
 TEST(DifferentialSpace, SimpleBatchedQueriesEqualBruteForce) {

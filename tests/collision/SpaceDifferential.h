@@ -6,12 +6,14 @@
 // geometries of the same bodies, with moves, teleports, sleeping, fixing, adds and removes between calls:
 // each call's contacts (per pair, in order, bit for bit) and ray and overlap queries (every other call in a
 // batch) must be the same; with filters, twins get the same random layer, mask and sensor flag, changed now
-// and then between calls.
+// and then between calls; with rebinds, twins are also bound to another body (or none), resized, and their
+// bodies deleted under them.
 #pragma once
 
 #include "DefaultSpace.h"
 #include "MathEigen.h"
 #include "Narrowphase.h"
+#include "SimpleCollisionSpace.h"
 #include "UserBody.h"
 #include "iCOBB.h"
 #include "iCPlane.h"
@@ -210,7 +212,8 @@ inline std::vector<int> slotsOf(const std::vector<iCollisionGeometry*>& found,
 
 inline void checkAgainstReference(const std::function<iCollisionSpace*()>& makeSpace,
                                   const std::function<iCollisionSpace*()>& makeReference, Scene scene,
-                                  unsigned seed, int count, int calls, bool filters = false) {
+                                  unsigned seed, int count, int calls, bool filters = false,
+                                  bool rebinds = false) {
     std::mt19937 gen(seed);
     auto uni = [&](float a, float b) { return std::uniform_real_distribution<float>(a, b)(gen); };
     auto pick = [&](int n) { return std::uniform_int_distribution<int>(0, n - 1)(gen); };
@@ -287,7 +290,7 @@ inline void checkAgainstReference(const std::function<iCollisionSpace*()>& makeS
     };
     for (int call = 0; call < calls; ++call) {
         // What happens between two calls.
-        const int what = call == 0 ? -1 : pick(8);
+        const int what = call == 0 ? -1 : pick(rebinds ? 12 : 8);
         for (auto& b : bodies) {
             RBDynamics& d = b->getDynamics();
             // 0: every movable body a little (within the margins); 1: some far, fast and turning.
@@ -327,6 +330,40 @@ inline void checkAgainstReference(const std::function<iCollisionSpace*()>& makeS
                         filterOf(g)->setSensor(sensor);
                     }
                 }
+        if (what == 8) // some twins bound to another body, or to none
+            for (size_t i = 0; i < twins.tested.size(); ++i)
+                if (twins.tested[i] && twins.tested[i]->getCollisionType() != CT_PLANE && pick(10) == 0) {
+                    UserBody* to = bodies.empty() || pick(5) == 0
+                                       ? nullptr
+                                       : bodies[size_t(pick(int(bodies.size())))].get();
+                    twins.tested[i]->attach(to);
+                    twins.reference[i]->attach(to);
+                }
+        if (what == 9) // some twins resized
+            for (size_t i = 0; i < twins.tested.size(); ++i)
+                if (twins.tested[i] && pick(8) == 0) {
+                    const float scale = uni(0.5f, 1.5f);
+                    if (twins.tested[i]->getCollisionType() == CT_SPHERE) {
+                        const float r = static_cast<iCSphere*>(twins.tested[i])->getRadius() * scale;
+                        static_cast<iCSphere*>(twins.tested[i])->setRadius(r);
+                        static_cast<iCSphere*>(twins.reference[i])->setRadius(r);
+                    } else if (twins.tested[i]->getCollisionType() == CT_OBB) {
+                        const Vector h = static_cast<iCOBB*>(twins.tested[i])->getRadius() * scale;
+                        static_cast<iCOBB*>(twins.tested[i])->setRadius(h);
+                        static_cast<iCOBB*>(twins.reference[i])->setRadius(h);
+                    }
+                }
+        if (what == 10 && bodies.size() > 1) { // a body deleted under its geometry (which stays, unbound)
+            const size_t k = size_t(pick(int(bodies.size())));
+            bodies.erase(bodies.begin() + std::ptrdiff_t(k));
+        }
+        if (what == 11) // teleported where they are (the previous pose is not swept from)
+            for (auto& b : bodies)
+                if (pick(4) == 0) b->getDynamics().markTeleported();
+        // The candidate stage alone now and then (a call that keeps no previous pose), then the whole call.
+        if (rebinds && pick(3) == 0)
+            for (iCollisionSpace* s : {tested, reference})
+                if (auto* simple = dynamic_cast<SimpleCollisionSpace*>(s)) simple->findCandidatePairs();
         compareQueries(call);
         tested->populateContactList(1.0f / 60.0f);
         reference->populateContactList(1.0f / 60.0f);
