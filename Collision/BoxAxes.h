@@ -1,5 +1,6 @@
 // BoxAxes.h - a box's three unit axes at a rotation (its rows, each normalised as Vector::normalize does),
-// and a box shape's world bounds: what every moved box costs a space's gathering, once per box and call. On
+// a box shape's world bounds, and a sphere or box that sits at its body's origin placed at a pose: what every
+// moved box costs a space's gathering, once per box and call. On
 // SSE2 the three components go side by side; each lane does the scalar operations in their order (x x + y y
 // + z z, one square root, one division a component; h.x |a0| + h.y |a1| + h.z |a2|), so the bits are the
 // same as the scalar code's.
@@ -64,6 +65,18 @@ inline void boxBounds(const BoxShape& b, Aabb& out) {
     out.min = b.centre - e;
     out.max = b.centre + e;
 #endif
+}
+
+// A sphere or box at its body's origin with the body's axes (CSphere, COBB: CollisionGeometry::
+// centredOnBody) placed at the body pose (origin, row-vector rotation r); its kind and size are left as
+// they are. Their writeWorldShapes is this, so a space may move a shape it holds without the geometry.
+inline void placeAtBody(WorldShape& s, const Vector& origin, const Matrix& r) {
+    if (s.kind == ShapeKind::Sphere) {
+        s.sphere.centre = origin;
+    } else if (s.kind == ShapeKind::Box) {
+        s.box.centre = origin;
+        unitAxes(r, s.box.axis);
+    }
 }
 
 } // namespace gcol

@@ -42,11 +42,11 @@ public:
     void writeWorldShapes(const Vector& origin, const Matrix& r, gcol::WorldShape* out) const override {
         gcol::WorldShape& s = *out;
         s.kind = gcol::ShapeKind::Box;
-        s.box.centre = origin;
-        // Normalised: the simulator tolerates orientation drift up to 1e-2 before cleaning it.
-        gcol::unitAxes(r, s.box.axis);
         s.box.halfExtents = m_half;
+        // Its axes normalised: the simulator tolerates orientation drift up to 1e-2 before cleaning it.
+        gcol::placeAtBody(s, origin, r);
     }
+    bool centredOnBody() const override { return true; }
     float minDimension() const override { return 2.0f * std::fmin(m_half.x, std::fmin(m_half.y, m_half.z)); }
     void start() { joinDefaultSpace(L"CreateCOBB"); }
 

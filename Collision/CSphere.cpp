@@ -1,4 +1,5 @@
 // CSphere.cpp - the collision sphere (CreateCSphere): one radius about its body frame's origin.
+#include "BoxAxes.h"
 #include "CollisionGeometry.h"
 #include "iCSphere.h"
 #include "iUtilities.h"
@@ -33,12 +34,13 @@ public:
     }
     ShapeMass shapeMass() const override { return sphereShapeMass(m_radius); }
     int shapeCount() const override { return 1; }
-    void writeWorldShapes(const Vector& origin, const Matrix&, gcol::WorldShape* out) const override {
+    void writeWorldShapes(const Vector& origin, const Matrix& r, gcol::WorldShape* out) const override {
         gcol::WorldShape& s = *out;
         s.kind = gcol::ShapeKind::Sphere;
-        s.sphere.centre = origin;
         s.sphere.radius = m_radius;
+        gcol::placeAtBody(s, origin, r);
     }
+    bool centredOnBody() const override { return true; }
     float minDimension() const override { return 2.0f * m_radius; }
     void start() { joinDefaultSpace(L"CreateCSphere"); }
 

@@ -47,6 +47,9 @@ public:
     virtual iCollisionGeometry* asInterface() = 0;
     // True for a plane: infinite, and static when it has no body.
     virtual bool isPlane() const { return false; }
+    // True when it is one shape at its body's origin, with its body's axes, whose writeWorldShapes is
+    // gcol::placeAtBody: a space moves the shape it holds with the body without asking the geometry.
+    virtual bool centredOnBody() const { return false; }
     // The solid this geometry is, for its body's inertia (RBDynamics::setShapeMass): volume 0 for none (a
     // plane, an empty compound).
     virtual ShapeMass shapeMass() const { return ShapeMass(); }
@@ -128,7 +131,7 @@ protected:
     void shapeChanged();
     // Tells its space's entry that what the entry keeps of the geometry (filter, body, shape version, the
     // space state's previous pose) may have changed: the entry reads the geometry again at the next call
-    // (a call that finds nothing changed does not read it: SpaceGather.cpp, gatherUnchanged).
+    // (a call otherwise reads of it only what its entry lacks: SpaceGather.cpp, gatherEntry).
     void edited();
 
 private:

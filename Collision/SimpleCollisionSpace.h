@@ -119,8 +119,8 @@ public:
     // That stage alone, as another engine's broadphase is timed (each geometry's box at its pose, then the
     // candidate pairs; no exact test, contact or event): how many candidate pairs it found. For benchmarks.
     size_t findCandidatePairs();
-    // For tests: false has every call read every geometry, as before entries mirrored them (gatherUnchanged
-    // off): the reference a space with mirrors is checked against.
+    // For tests: false has every call read every geometry, as before entries mirrored them (SpaceGather.cpp):
+    // the reference a space with mirrors is checked against.
     void setGeometryMirrors(bool on) { m_mirrors = on; }
 
     // Per-geometry working state, kept between calls (SpaceEntry.h).
@@ -164,7 +164,6 @@ private:
         m_contactGeoms.resize(kept);
     }
     bool gatherEntry(Entry& e, bool continuous);
-    bool gatherUnchanged(Entry& e, bool continuous); // gatherEntry's results, the geometry left unread
 
 public:
     // Whether g is at its entry e's pose now, bit for bit, told from its body's raw pose inputs alone (a body
@@ -299,7 +298,7 @@ private:
     // (Entry::Cache::rootIsSelf holds).
     unsigned long long m_linksEpoch = 0;
     bool m_linksUnchanged = false;
-    bool m_mirrors = true;   // gatherUnchanged may answer for an entry (setGeometryMirrors)
+    bool m_mirrors = true;   // entries may stand for their geometries (setGeometryMirrors)
     size_t m_shapeWaste = 0; // shapes in m_shapes no entry owns
     // Scratch reused between calls.
     std::vector<gcol::WorldShape> m_scratchA, m_scratchB;

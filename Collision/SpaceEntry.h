@@ -42,7 +42,7 @@ struct alignas(64) SpaceEntry {
         bool sized = false;      // minDim and bound hold for sizedVersion
         bool reposed = false;    // its shapes were made anew at the last call (so probably at this one)
         bool rootIsSelf = false; // dynamics had no parent at the last call
-        // The geometry as the last call left it, so that a call need not read it (gatherUnchanged): its
+        // The geometry as the last call left it, so that a call need not read it (gatherEntry): its
         // filter, body and shape version are the entry's (no CollisionGeometry::edited() since), and its
         // space state's hasPrevious, previousBody == body and previousTeleports are these.
         bool mirrored = false;
@@ -54,7 +54,8 @@ struct alignas(64) SpaceEntry {
         gcol::PoseInputs rawInputs;
         gcol::Aabb tight; // its shapes' box at the pose
         unsigned sizedVersion = 0;
-        int capacity = 0; // shapes m_shapes holds for it from first on
+        bool centred = false; // its one shape sits at the body's origin (centredOnBody), for sizedVersion
+        int capacity = 0;     // shapes m_shapes holds for it from first on
     } cache;
     int first = 0, last = 0;   // its shapes in m_shapes
     Vector origin, prevOrigin; // the previous pose: set (and read) only in a call with sampling on

@@ -64,8 +64,9 @@ TEST(DifferentialSpace, OctreeEqualsSimpleWithoutSampling) {
     spacediff::checkAgainstReference(make, reference, Scene::Dense, 4, 200, 40);
 }
 // A space whose entries mirror their geometries (a call reads a geometry only when an edit reached it or its
-// body moved: SpaceGather.cpp, gatherUnchanged) beside one that reads every geometry every call, over calls
-// with moves, teleports, sleeping, fixing, adds, removes, filters, rebinds, resizes and deleted bodies.
+// body moved and its shapes are not simply at the body's origin: SpaceGather.cpp) beside one that reads every
+// geometry every call, over calls with moves, teleports, sleeping, fixing, adds, removes, filters, rebinds,
+// resizes and deleted bodies.
 TEST(DifferentialSpace, MirroredEntriesEqualReadingEveryGeometry) {
     auto reading = [](iCollisionSpace* s) {
         dynamic_cast<SimpleCollisionSpace&>(*s).setGeometryMirrors(false);
