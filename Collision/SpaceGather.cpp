@@ -1,8 +1,9 @@
 // SpaceGather.cpp - step 1 of a space's call (SimpleCollisionSpace.h): every member's entry brought up to
 // date with its geometry and body. An entry keeps its world shapes and box while its body's pose, its shape
-// version and its body are as at the last call, so a call where little moved reads little; one that moved is
-// built without a load waiting on a store (VectorRegister.h) and with its geometry's and body's cache lines
-// asked for a few entries ahead.
+// version and its body are as at the last call, so a call where little moved reads little; while no edit
+// reached a geometry its entry stands for it, and the geometry itself is not read; one that moved is built
+// without a load waiting on a store (VectorRegister.h) and with the cache lines it needs asked for a few
+// entries ahead.
 #include "BoxAxes.h"
 #include "FetchAhead.h"
 #include "MathEigen.h"
@@ -12,7 +13,6 @@
 #include "iRigidBody.h"
 #include "iUtilities.h"
 
-#include <algorithm>
 #include <cmath>
 #include <cstring>
 
@@ -129,15 +129,6 @@ bool SimpleCollisionSpace::atEntryPose(const Entry& e, const CollisionGeometry& 
         return false;
     const RBDynamics& d = e.body->getDynamics();
     return !d.attachedTo() && c.rawInputs.same(d);
-}
-
-// Room for n shapes of e at the end of m_shapes: they no longer fit in its own.
-void SimpleCollisionSpace::moveToEnd(Entry& e, int n) {
-    m_shapeWaste += size_t(e.cache.capacity);
-    e.first = int(m_shapes.size());
-    e.cache.capacity = n;
-    m_shapes.resize(m_shapes.size() + size_t(n));
-    if (m_shapeWaste > m_shapes.size() / 2) m_layoutDirty = true; // compacted at the next call
 }
 
 // Brings e up to date with its geometry: false when the geometry takes no part in this call. A geometry
@@ -348,42 +339,6 @@ bool SimpleCollisionSpace::gatherEntry(Entry& e, bool continuous) {
         e.box.max += Vector(r, r, r);
     }
     return true;
-}
-
-// One entry per member, in the members' order: a member that had an entry keeps it (its cache and shapes),
-// a new one starts empty. The shapes are packed anew (each entry's room is its shapes, at least one).
-void SimpleCollisionSpace::layOutEntries() {
-    m_oldEntries.swap(m_entries);
-    m_oldShapes.swap(m_shapes);
-    m_entries.clear();
-    m_shapes.clear();
-    m_shapeWaste = 0;
-    for (CollisionGeometry* g : m_members) {
-        CollisionGeometry::SpaceState& st = g->spaceState();
-        const int old = st.entry;
-        st.entry = int(m_entries.size());
-        if (old >= 0 && size_t(old) < m_oldEntries.size() && m_oldEntries[size_t(old)].g == g) {
-            m_entries.push_back(m_oldEntries[size_t(old)]);
-            Entry& e = m_entries.back();
-            const int first = int(m_shapes.size());
-            m_shapes.insert(m_shapes.end(), m_oldShapes.begin() + e.first, m_oldShapes.begin() + e.last);
-            e.last = first + (e.last - e.first);
-            e.first = first;
-            e.cache.capacity = std::max(1, e.last - e.first);
-        } else {
-            m_entries.emplace_back();
-            Entry& e = m_entries.back();
-            e.g = g;
-            e.plane = g->isPlane();
-            e.active = false;
-            e.first = e.last = int(m_shapes.size());
-            e.cache.capacity = 1;
-        }
-        m_shapes.resize(size_t(m_entries.back().first + m_entries.back().cache.capacity));
-    }
-    m_interfaces.resize(m_entries.size());
-    for (size_t i = 0; i < m_entries.size(); ++i) m_interfaces[i] = m_entries[i].g->asInterface();
-    m_layoutDirty = false;
 }
 
 namespace {

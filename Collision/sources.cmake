@@ -4,7 +4,7 @@ set(GUARDIAN_COLLISION_SOURCES
   CollisionGeometry.cpp CSphere.cpp COBB.cpp CPlane.cpp CCompound.cpp
   SimpleCollisionSpace.cpp SpaceNarrowPhase.cpp SpaceListeners.cpp SpaceEvents.cpp SpaceContactEvents.cpp SpaceQueries.cpp SpaceQueryBatch.cpp
   SeparationBound.cpp SpaceShapeCast.cpp SpaceCastObstacles.cpp SpaceSnapshot.cpp DynamicTree.cpp SweepAndPrune.cpp TreeBroadphase.cpp
-  SpaceDebugDraw.cpp SpaceWake.cpp SpaceGather.cpp)
+  SpaceDebugDraw.cpp SpaceWake.cpp SpaceGather.cpp SpaceLayout.cpp)
 set(GUARDIAN_COLLISION_HEADERS
   Shapes.h BoxAxes.h FetchAhead.h VectorRegister.h PoseInputs.h Narrowphase.h ManifoldReduce.h CollisionGeometry.h SpaceEntry.h SimpleCollisionSpace.h Broadphase.h
   DynamicTree.h SweepAndPrune.h TreeBroadphase.h GrowingArrays.h)
