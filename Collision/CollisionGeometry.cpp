@@ -77,10 +77,9 @@ void CollisionGeometry::shapeChanged() {
 }
 
 void CollisionGeometry::edited() {
-    std::vector<SpaceEntry>* entries = m_state.entries;
-    const int i = m_state.entry;
-    if (entries && i >= 0 && size_t(i) < entries->size() && (*entries)[size_t(i)].g == this)
-        (*entries)[size_t(i)].cache.mirrored = false;
+    // (Found through the space rather than kept in the space state: eight bytes more there made a box
+    // geometry five cache lines instead of four.)
+    if (auto* s = dynamic_cast<SimpleCollisionSpace*>(m_space)) s->geometryEdited(*this);
 }
 
 void CollisionGeometry::joinDefaultSpace(const wchar_t* factory) {

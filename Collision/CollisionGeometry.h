@@ -19,7 +19,6 @@
 #include <vector>
 
 class iRigidBody;
-struct SpaceEntry;
 
 // On a cache line of its own: what a space call reads of every geometry (the filter, the body, the space
 // state's first fields: 56 bytes) is then one line.
@@ -98,7 +97,6 @@ public:
         int member = -1;                                 // its place among the space's members
         Vector previousOrigin;
         Matrix previousRotation = Matrix(1);
-        std::vector<SpaceEntry>* entries = nullptr; // its space's entries, which edited() tells
     };
     SpaceState& spaceState() { return m_state; }
     const SpaceState& spaceState() const { return m_state; }

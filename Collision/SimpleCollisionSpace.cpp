@@ -51,7 +51,6 @@ bool SimpleCollisionSpace::add(iCollisionGeometry* o) {
     st.order = ++m_joined;
     st.listed = m_geometry.insert(m_geometry.end(), o);
     st.member = int(m_members.size());
-    st.entries = &m_entries;
     m_members.push_back(g);
     ++m_membership;
     m_layoutDirty = true;
@@ -107,6 +106,12 @@ void SimpleCollisionSpace::settleRemovals() {
         [this](const CollisionGeometry* a, const CollisionGeometry* b) { return !isGone(a) && !isGone(b); });
     forgetEventsOfGone();
     m_gone.clear();
+}
+
+void SimpleCollisionSpace::geometryEdited(const CollisionGeometry& g) {
+    const int i = g.spaceState().entry;
+    if (i >= 0 && size_t(i) < m_entries.size() && m_entries[size_t(i)].g == &g)
+        m_entries[size_t(i)].cache.mirrored = false;
 }
 
 bool SimpleCollisionSpace::deferDelete(CollisionGeometry* g) {

@@ -114,6 +114,8 @@ public:
     // otherwise false and the geometry deletes itself.
     bool deferDelete(CollisionGeometry* g);
     bool isNotifying() const { return m_notifying; }
+    // What g's entry mirrors of it may have changed (CollisionGeometry::edited): it reads g again.
+    void geometryEdited(const CollisionGeometry& g);
     // Its candidate-pair stage (for tests and benchmarks: TreeBroadphase counts its tree queries).
     Broadphase& broadphase() { return *m_broadphase; }
     // That stage alone, as another engine's broadphase is timed (each geometry's box at its pose, then the

@@ -73,7 +73,6 @@ bool SimpleCollisionSpace::restoreSnapshot(const iSnapshot* snapshot) {
         st = m.state;
         st.proxy = proxy;
         st.entry = entry;
-        st.entries = &m_entries;
     }
     for (Entry& e : m_entries) { // the previous poses are the snapshot's now, and the space states are
         e.cache.prevIsPose = false;
