@@ -378,11 +378,13 @@ void SimpleCollisionSpace::gatherEntries(bool continuous) {
             // its shape that follow (a box's half extents: up to byte 190). Every line of those 190 bytes
             // always: a moved call 10-25 % faster than the first line alone, a still one slower (a call that
             // reads little is bound by the lines it asks for).
-            // Not the geometry of an entry that mirrors it, unless the entry moved at the last call and its
-            // shapes do not simply sit at the body's origin: gatherEntry will not read it.
+            // Not the geometry of an entry that mirrors it, unless the entry moved at the last call (and so
+            // probably moves now) and either its shapes do not simply sit at the body's origin (gatherEntry
+            // reads them) or this is a whole call, whose end writes a moved geometry's space state (lines
+            // that, not asked for here, made a 10,000-box pile's step about 1.5 % slower).
             const char* g = reinterpret_cast<const char*>(ahead.g);
             const bool mirrored = m_mirrors && ahead.cache.mirrored;
-            if (!mirrored || (ahead.cache.reposed && !ahead.cache.centred)) {
+            if (!mirrored || (ahead.cache.reposed && (m_populating || !ahead.cache.centred))) {
                 fetchAhead(g);
                 if (ahead.cache.reposed)
                     for (int offset : {64, 128}) fetchAhead(g + offset);
