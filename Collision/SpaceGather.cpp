@@ -140,8 +140,9 @@ bool SimpleCollisionSpace::atEntryPose(const Entry& e, const CollisionGeometry& 
 // space keeps in it) the entry mirrors while no edit reached the geometry since the last call
 // (Cache::mirrored, CollisionGeometry::edited): then the geometry is not read, a cache line or three apart
 // from everything else, unless the entry lacks something (its shapes at a new pose, when they do not simply
-// sit at the body's origin; a previous pose the entry no longer holds). In a call of 10,000 boxes, cache
-// cold, that took 30 % off one where nothing moved and 20 % off one where every box moved.
+// sit at the body's origin; a previous pose the entry no longer holds). The candidate stage of 10,000 boxes,
+// cache cold, mirrors on and off in alternate calls of one process: 0.87-0.89x the time where nothing moved,
+// 0.76-0.89x where every box moved.
 bool SimpleCollisionSpace::gatherEntry(Entry& e, bool continuous) {
     CollisionGeometry* g = e.g;
     Entry::Cache& c = e.cache;
