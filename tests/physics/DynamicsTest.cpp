@@ -179,6 +179,28 @@ TEST(Dynamics, AStepThatOverflowsIsUndone) {
     EXPECT_LT(calm->getDynamics().velocity.y, 0.0f);
 }
 
+// A step undone for a body puts back the bodies attached to it (their poses are relative to it): the pose
+// each ends the step with is the one after the undo, so the next step does not take them for teleported by
+// the game (a teleport is never swept). The attached body is listed first, ahead of the one undone.
+TEST(Dynamics, AStepUndoneForABodyLeavesTheBodiesAttachedToItUnteleported) {
+    SceneHolder h(60);
+    ErrorRecorder errors;
+    iRigidBody* rider = CreateRigidBody(nullptr);
+    iRigidBody* wild = CreateRigidBody(nullptr);
+    rider->getDynamics().position = Vector(0, 1, 0);
+    rider->getDynamics().attachTo(&wild->getDynamics());
+    wild->getDynamics().mass = 1e-3f;
+    wild->getDynamics().velocity = Vector(3e38f, 0, 0);
+    wild->getDynamics().force = Vector(3e38f, 0, 0); // overflows to Inf in every step, which is undone
+    h.run(17);                                       // the first step (undone already)
+    const unsigned teleports = rider->getDynamics().teleports;
+    h.run(50);
+    EXPECT_GE(errors.count(), 1u);
+    EXPECT_TRUE(wild->getDynamics().position.isFinite());
+    EXPECT_TRUE(rider->getDynamics().getWorldPosition().isFinite());
+    EXPECT_EQ(rider->getDynamics().teleports, teleports);
+}
+
 // Setting either tensor sets the other to its inverse.
 TEST(Dynamics, InertiaTensorAndItsInverseStayConsistent) {
     RBDynamics d;
