@@ -179,19 +179,6 @@ void Joint::solve(SolverBody& a, SolverBody& b, Real h, JointPass pass, const Jo
         m_point.solve(a, b, push ? Vec3(soft.biasRate * m_pointError) : Vec3::Zero(), push ? soft : rigid);
 }
 
-// K^-1 r = y - D^-1 u (c u . y) / q and its u-part (u . y) / q, with y = D^-1 r and q = 1 + c u . D^-1 u
-// (Sherman-Morrison; JointRows.h, PointBlock).
-void PointBlock::solveSwing(SolverBody& a, SolverBody& b, const Vec3& bias, const JointSoftness& s) {
-    const Vec3 y = mass * (speed(a, b) + swing * swingAxis.dot(b.w - a.w) + bias);
-    const Real uy = swing.dot(y);
-    const Vec3 change =
-        -s.massScale * Vec3(y - swingMass * (swingScale * uy / swingDenominator)) - s.impulseScale * impulse;
-    const Real swingChange = -s.massScale * (uy / swingDenominator) - s.impulseScale * swingImpulse;
-    apply(a, b, change, swingChange);
-    impulse += change;
-    swingImpulse += swingChange;
-}
-
 void Joint::save() {
     m_point.saved = m_point.impulse;
     m_point.savedSwing = m_point.swingImpulse;

@@ -153,36 +153,11 @@ struct PointBlock {
     // a 0.1 kg, 4 cm box hinged 70 m out from a spinning 1 t box, 1.8 10^7, strayed 9 mm; at 100 m it flew).
     Real swingCondition = 0;
 
-    void setArms(const SolverBody& a, const SolverBody& b, const Vec3& armA, const Vec3& armB) {
-        rA = armA;
-        rB = armB;
-        swings = false;
-        const Mat3 sA = cross(rA), sB = cross(rB);
-        const Mat3 k =
-            (a.invMass + b.invMass) * Mat3::Identity() - sA * a.invInertia * sA - sB * b.invInertia * sB;
-        mass = k.determinant() != 0 ? Mat3(k.inverse()) : Mat3::Zero();
-    }
+    void setArms(const SolverBody& a, const SolverBody& b, const Vec3& armA,
+                 const Vec3& armB); // JointRows.cpp
     // The point at the light body's centre of mass (its arm zero), the other's arm reaching it.
     void setSwingArms(const SolverBody& a, const SolverBody& b, bool lightIsB, const Vec3& arm,
-                      const Vec3& swingArm, const Vec3& axis) {
-        rA = lightIsB ? arm : Vec3(Vec3::Zero());
-        rB = lightIsB ? Vec3(Vec3::Zero()) : arm;
-        swings = true;
-        swing = swingArm;
-        swingAxis = axis;
-        const SolverBody &heavy = lightIsB ? a : b, &light = lightIsB ? b : a;
-        const Mat3 j = swing * axis.transpose() - cross(arm); // the heavy body's angular Jacobian
-        const Mat3 d = (a.invMass + b.invMass) * Mat3::Identity() + j * heavy.invInertia * j.transpose();
-        mass = d.determinant() != 0 ? Mat3(d.inverse()) : Mat3::Zero();
-        swingScale = axis.dot(light.invInertia * axis);
-        swingMass = mass * swing;
-        swingDenominator = 1 + swingScale * swing.dot(swingMass);
-        // The impulse carried over turns the light body as u now says: a u-part kept from poses before
-        // would hold it by a force with no torque (a hinged pendulum kept its speed against gravity).
-        swingImpulse = swing.dot(impulse);
-        const Real along = swing.dot(d * swing), uu = swing.squaredNorm();
-        swingCondition = along > 0 ? swingScale * uu * uu / along : 0;
-    }
+                      const Vec3& swingArm, const Vec3& axis); // JointRows.cpp
     // Cdot without the swing (a swinging block's own is solveSwing's).
     Vec3 speed(const SolverBody& a, const SolverBody& b) const {
         return b.v + b.w.cross(rB) - a.v - a.w.cross(rA);
@@ -216,7 +191,7 @@ struct PointBlock {
         apply(a, b, change);
         impulse += change;
     }
-    void solveSwing(SolverBody& a, SolverBody& b, const Vec3& bias, const JointSoftness& s); // Joint.cpp
+    void solveSwing(SolverBody& a, SolverBody& b, const Vec3& bias, const JointSoftness& s); // JointRows.cpp
 };
 
 // The relative rotation held: Cdot = wB - wA; the error is the rotation vector taking A's frame to B's.
@@ -224,10 +199,7 @@ struct OrientationBlock {
     Mat3 mass = Mat3::Zero();
     Vec3 impulse = Vec3::Zero(), saved = Vec3::Zero();
 
-    void setMass(const SolverBody& a, const SolverBody& b) {
-        const Mat3 k = a.invInertia + b.invInertia;
-        mass = k.determinant() != 0 ? Mat3(k.inverse()) : Mat3::Zero();
-    }
+    void setMass(const SolverBody& a, const SolverBody& b); // JointRows.cpp
     void apply(SolverBody& a, SolverBody& b, const Vec3& lambda) const {
         a.w -= a.invInertia * lambda;
         b.w += b.invInertia * lambda;

@@ -7,6 +7,7 @@ set(GUARDIAN_PHYSICS_SOURCES
   FixedJoint.cpp
   HingeJoint.cpp
   Joint.cpp
+  JointRows.cpp
   JointClosing.cpp
   JointStage.cpp
   JointTethers.cpp
