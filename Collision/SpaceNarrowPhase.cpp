@@ -28,6 +28,8 @@
 #include "MathEigen.h"
 #include "SimpleCollisionSpace.h"
 
+#include <Eigen/Geometry>
+
 #include <cmath>
 
 namespace {

@@ -3,6 +3,8 @@
 #include "MathDeclarations.h"
 #include "MathEigen.h"
 
+#include <Eigen/SVD>
+
 #include <cmath>
 
 Matrix Matrix::inverse() const {

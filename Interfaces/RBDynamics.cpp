@@ -8,6 +8,8 @@
 #include "MathEigen.h"
 #include "iUtilities.h"
 
+#include <Eigen/Eigenvalues>
+
 #include <atomic>
 #include <cmath>
 

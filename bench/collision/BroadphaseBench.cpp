@@ -23,6 +23,7 @@
 #include "iOctreeCollisionSpace.h"
 #include "iSimpleCollisionSpace.h"
 
+#include <Eigen/Geometry>
 #include <benchmark/benchmark.h>
 
 #include <chrono>

@@ -13,6 +13,7 @@
 #include "iCollisionSpace.h"
 #include "iSimpleCollisionSpace.h"
 
+#include <Eigen/Geometry>
 #include <benchmark/benchmark.h>
 
 #include <memory>

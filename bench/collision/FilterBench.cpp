@@ -14,6 +14,7 @@
 #include "iContactEvents.h"
 #include "iOctreeCollisionSpace.h"
 
+#include <Eigen/Geometry>
 #include <benchmark/benchmark.h>
 
 #include <cmath>

@@ -24,6 +24,7 @@
 #include "iContactFeatures.h"
 #include "iUtilities.h"
 
+#include <Eigen/Geometry>
 #include <gtest/gtest.h>
 
 #include <algorithm>
