@@ -35,7 +35,8 @@ if [ "${1:-}" != "--quick" ]; then
   # and UBSan, the reference implementations; clang++ builds the instrumented code three times faster than g++
   # (a unity file of Physics/: 22 s against 65 s). On a CPU with AVX this pass is built for it (GUARDIAN_AVX:
   # the contact solver's eight-lane blocks), so the determinism hashes are checked at both widths (the g++
-  # pass keeps the default four) and the eight-lane code runs under the sanitizers.
+  # pass keeps the default four) and the eight-lane code runs under the sanitizers. UBSan skips Eigen's
+  # headers (scripts/ubsan-ignore.txt): this pass's tests in half the CPU time.
   # The package and install tests build projects of their own without sanitizers; they, the extremes suite's
   # long runs (a 10^4-step soak: 41 s under ASan) and the testbed window ran in the g++ pass: not run again. The
   # double-precision companion library and its tests ran above too (GUARDIAN_DOUBLE_COMPANION). So did the
