@@ -7,6 +7,7 @@
 // with t the mean of the two axes. The twist first; in the velocity passes the cone and the point as one
 // block (solvePointAndCone), in the push out one after the other.
 #include "Joint.h"
+#include "JointRowsInline.h"
 
 #include "iBallJoint.h"
 #include "iUtilities.h"

@@ -4,6 +4,7 @@
 // C = L - length, when the two are equal (a rod); otherwise one-sided rows, gap L - min (pushing apart) and
 // max - L (pulling together), which a slack rope leaves at rest.
 #include "Joint.h"
+#include "JointRowsInline.h"
 
 #include "iDistanceJoint.h"
 #include "iUtilities.h"

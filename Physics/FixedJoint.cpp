@@ -5,6 +5,7 @@
 // mass where B's frame, put on A's, carries it (prepare): at the anchors (C = pB - pA) it is the same
 // constraint, but not in float when an arm is long against its body's size.
 #include "Joint.h"
+#include "JointRowsInline.h"
 
 #include "iFixedJoint.h"
 

@@ -6,6 +6,7 @@
 // (wB - wA) . aA); the motor, Cdot = speed with |lambda| <= maxTorque h. Solved motor and limits first, the
 // point last (what matters most ends the sweep exact). This file prepares the rows; Joint::solve solves them.
 #include "Joint.h"
+#include "JointRowsInline.h"
 
 #include "RigidBody.h"
 #include "iHingeJoint.h"

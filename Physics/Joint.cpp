@@ -1,6 +1,7 @@
 // Joint.cpp - what every joint shares: its bodies' joint lists, letting go, deferred deletion, the frames
 // entering a step, the generic warm start, save/restore and reaction, breaking, and the factories' checks.
 #include "Joint.h"
+#include "JointRowsInline.h"
 
 #include "MathEigen.h"
 #include "PhysicsScene.h"

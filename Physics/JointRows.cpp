@@ -3,7 +3,7 @@
 // instantiated in every file that includes it, cost about a second of compile time a file (JointRows.h
 // reaches 29 of the simulator's files, most of them only for the layouts); a call per joint a sub-step costs
 // nothing beside an inverse.
-#include "JointRows.h"
+#include "JointRowsInline.h"
 
 namespace physics {
 

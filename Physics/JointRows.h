@@ -11,11 +11,13 @@
 // may close within the sub-step and no more (speculative, as the contacts' kept points).
 // Blocks solve their three rows at once (K is 3x3), which converges where three rows one at a time would
 // not (a chain of links: Jolt's PointConstraintPart and RotationEulerConstraintPart).
+//
+// Here the layouts; the members' bodies and the helpers joints build rows with are in JointRowsInline.h (for
+// the files that solve joints), the blocks' effective masses in JointRows.cpp.
 #pragma once
 
 #include "SolverData.h"
 
-#include <algorithm>
 #include <limits>
 
 namespace physics {
@@ -33,16 +35,6 @@ struct JointFrame {
     Quat basis = Quat::Identity(); // x is the joint's axis (hinge, slider, twist), y and z across it
 };
 
-// Where a frame is now on a solver body.
-inline Vec3 worldPoint(const SolverBody& b, const JointFrame& f) { return b.origin + b.rotation * f.point; }
-inline Quat worldBasis(const SolverBody& b, const JointFrame& f) { return b.rotation * f.basis; }
-
-inline Mat3 cross(const Vec3& v) {
-    Mat3 m;
-    m << 0, -v.z(), v.y(), v.z(), 0, -v.x(), -v.y(), v.x(), 0;
-    return m;
-}
-
 // What a row does with its error (set by its joint's prepare): nothing; hold C = error at 0; keep a gap =
 // error >= 0 (a limit); drive Cdot to a target speed = error within [lower, upper] (a motor).
 enum class RowKind : unsigned char { Off, Equal, Limit, Motor };
@@ -55,81 +47,22 @@ struct JointRow {
     Real impulse = 0, saved = 0; // accumulated this sub-step; before the push out
     Real lower = -std::numeric_limits<Real>::infinity(), upper = std::numeric_limits<Real>::infinity();
 
-    void off() {
-        kind = RowKind::Off;
-        impulse = 0;
-    }
+    inline void off();
     // A linear row along n between world points with arms rA, rB from the centres of mass.
-    void setLinear(const SolverBody& a, const SolverBody& b, const Vec3& dir, const Vec3& rA,
-                   const Vec3& rB) {
-        n = dir;
-        armA = rA.cross(dir);
-        armB = rB.cross(dir);
-        setMass(a, b);
-    }
+    inline void setLinear(const SolverBody& a, const SolverBody& b, const Vec3& dir, const Vec3& rA,
+                          const Vec3& rB);
     // An angular row about axis.
-    void setAngular(const SolverBody& a, const SolverBody& b, const Vec3& axis) {
-        n = Vec3::Zero();
-        armA = armB = axis;
-        setMass(a, b);
-    }
-    void setMass(const SolverBody& a, const SolverBody& b) {
-        const Real k = (a.invMass + b.invMass) * n.squaredNorm() + armA.dot(a.invInertia * armA) +
-                       armB.dot(b.invInertia * armB);
-        mass = k > 0 ? 1 / k : 0;
-    }
-    Real speed(const SolverBody& a, const SolverBody& b) const {
-        return n.dot(b.v - a.v) + armB.dot(b.w) - armA.dot(a.w);
-    }
-    void apply(SolverBody& a, SolverBody& b, Real lambda) const {
-        a.v -= (a.invMass * lambda) * n;
-        a.w -= a.invInertia * (lambda * armA);
-        b.v += (b.invMass * lambda) * n;
-        b.w += b.invInertia * (lambda * armB);
-    }
+    inline void setAngular(const SolverBody& a, const SolverBody& b, const Vec3& axis);
+    inline void setMass(const SolverBody& a, const SolverBody& b);
+    inline Real speed(const SolverBody& a, const SolverBody& b) const;
+    inline void apply(SolverBody& a, SolverBody& b, Real lambda) const;
     // One solve toward Cdot = -bias, softly (massScale, impulseScale), the total kept in [lower, upper].
-    void solve(SolverBody& a, SolverBody& b, Real bias, const JointSoftness& s = JointSoftness{}) {
-        const Real change = -mass * s.massScale * (speed(a, b) + bias) - s.impulseScale * impulse;
-        const Real total = std::clamp(impulse + change, lower, upper);
-        apply(a, b, total - impulse);
-        impulse = total;
-    }
+    inline void solve(SolverBody& a, SolverBody& b, Real bias, const JointSoftness& s = JointSoftness{});
     // A one-sided limit whose gap (>= 0: that far from the limit) shrinks as Cdot < 0: the gap may close
     // within the sub-step (speculative); past the limit, the push-out pass corrects it softly.
-    void solveLimit(SolverBody& a, SolverBody& b, Real gap, Real h, bool useBias, const JointSoftness& s) {
-        if (gap > 0)
-            solve(a, b, gap / h);
-        else if (useBias)
-            solve(a, b, s.biasRate * gap, s);
-        else
-            solve(a, b, 0);
-    }
+    inline void solveLimit(SolverBody& a, SolverBody& b, Real gap, Real h, bool useBias,
+                           const JointSoftness& s);
 };
-
-// A one-sided limit row: its impulse only pushes (gap >= 0 kept).
-inline void makeLimit(JointRow& r, Real gap) {
-    r.kind = RowKind::Limit;
-    r.error = gap;
-    r.lower = 0;
-    r.upper = std::numeric_limits<Real>::infinity();
-}
-inline void makeEqual(JointRow& r, Real c) {
-    r.kind = RowKind::Equal;
-    r.error = c;
-    r.lower = -std::numeric_limits<Real>::infinity();
-    r.upper = std::numeric_limits<Real>::infinity();
-}
-inline void makeMotor(JointRow& r, Real speed, Real maxImpulse) {
-    r.kind = RowKind::Motor;
-    r.error = speed;
-    r.lower = -maxImpulse;
-    r.upper = maxImpulse;
-}
-
-// Where a joint's linear rows act when they act at a centre of mass (the weld, the slider, the hinge's
-// point): the lighter body's (B's on a tie), so that a small body far out is not turned by its own linear
-// rows.
-inline bool bIsLighter(const SolverBody& a, const SolverBody& b) { return b.invMass >= a.invMass; }
 
 // The anchors pB and pA together: C = pB - pA, Cdot = vB + wB x rB - vA - wA x rA.
 //
@@ -159,38 +92,13 @@ struct PointBlock {
     void setSwingArms(const SolverBody& a, const SolverBody& b, bool lightIsB, const Vec3& arm,
                       const Vec3& swingArm, const Vec3& axis); // JointRows.cpp
     // Cdot without the swing (a swinging block's own is solveSwing's).
-    Vec3 speed(const SolverBody& a, const SolverBody& b) const {
-        return b.v + b.w.cross(rB) - a.v - a.w.cross(rA);
-    }
-    void apply(SolverBody& a, SolverBody& b, const Vec3& lambda) const {
-        a.v -= a.invMass * lambda;
-        a.w -= a.invInertia * rA.cross(lambda);
-        b.v += b.invMass * lambda;
-        b.w += b.invInertia * rB.cross(lambda);
-    }
+    inline Vec3 speed(const SolverBody& a, const SolverBody& b) const;
+    inline void apply(SolverBody& a, SolverBody& b, const Vec3& lambda) const;
     // With a swing: lambda and its u-part.
-    void apply(SolverBody& a, SolverBody& b, const Vec3& lambda, Real swingLambda) const {
-        const Vec3 turn = swingAxis * swingLambda;
-        a.v -= a.invMass * lambda;
-        a.w -= a.invInertia * (rA.cross(lambda) + turn);
-        b.v += b.invMass * lambda;
-        b.w += b.invInertia * (rB.cross(lambda) + turn);
-    }
-    void warmStart(SolverBody& a, SolverBody& b) const {
-        if (swings)
-            apply(a, b, impulse, swingImpulse);
-        else
-            apply(a, b, impulse);
-    }
-    void solve(SolverBody& a, SolverBody& b, const Vec3& bias, const JointSoftness& s = JointSoftness{}) {
-        if (swings) {
-            solveSwing(a, b, bias, s); // out of line: the plain solve stays small enough to inline
-            return;
-        }
-        const Vec3 change = -s.massScale * (mass * (speed(a, b) + bias)) - s.impulseScale * impulse;
-        apply(a, b, change);
-        impulse += change;
-    }
+    inline void apply(SolverBody& a, SolverBody& b, const Vec3& lambda, Real swingLambda) const;
+    inline void warmStart(SolverBody& a, SolverBody& b) const;
+    inline void solve(SolverBody& a, SolverBody& b, const Vec3& bias,
+                      const JointSoftness& s = JointSoftness{});
     void solveSwing(SolverBody& a, SolverBody& b, const Vec3& bias, const JointSoftness& s); // JointRows.cpp
 };
 
@@ -200,31 +108,9 @@ struct OrientationBlock {
     Vec3 impulse = Vec3::Zero(), saved = Vec3::Zero();
 
     void setMass(const SolverBody& a, const SolverBody& b); // JointRows.cpp
-    void apply(SolverBody& a, SolverBody& b, const Vec3& lambda) const {
-        a.w -= a.invInertia * lambda;
-        b.w += b.invInertia * lambda;
-    }
-    void solve(SolverBody& a, SolverBody& b, const Vec3& bias, const JointSoftness& s = JointSoftness{}) {
-        const Vec3 change = -s.massScale * (mass * (b.w - a.w + bias)) - s.impulseScale * impulse;
-        apply(a, b, change);
-        impulse += change;
-    }
+    inline void apply(SolverBody& a, SolverBody& b, const Vec3& lambda) const;
+    inline void solve(SolverBody& a, SolverBody& b, const Vec3& bias,
+                      const JointSoftness& s = JointSoftness{});
 };
-
-// The small rotation (axis times angle) that turns frame qA into qB, both world.
-inline Vec3 rotationError(const Quat& qA, const Quat& qB) {
-    Quat e = qB * qA.conjugate();
-    if (e.w() < 0) e.coeffs() = -e.coeffs();
-    return 2 * e.vec();
-}
-
-// B's turn relative to A about their common x axis (the twist of a swing-twist split), in (-pi, pi].
-inline Real twistAngle(const Quat& qA, const Quat& qB) {
-    const Quat r = qA.conjugate() * qB; // B in A's joint axes
-    Real angle = 2 * std::atan2(r.x(), r.w());
-    if (angle > Real(3.14159265358979)) angle -= Real(6.28318530717959);
-    if (angle <= -Real(3.14159265358979)) angle += Real(6.28318530717959);
-    return angle;
-}
 
 } // namespace physics

@@ -3,6 +3,7 @@
 // beside the contacts' (Joint.h).
 #include "ContactSolver.h"
 #include "Joint.h"
+#include "JointRowsInline.h"
 
 #include "RigidBody.h"
 

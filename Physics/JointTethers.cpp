@@ -27,6 +27,7 @@
 #include "ContactSolver.h"
 #include "GrowingStorage.h"
 #include "Joint.h"
+#include "JointRowsInline.h"
 #include "SolverRows.h"
 
 #include <algorithm>

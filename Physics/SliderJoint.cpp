@@ -6,6 +6,7 @@
 // Cdot = speed along x with |lambda| <= maxForce h. The linear rows act at the lighter body's centre of mass
 // (prepare), which with the orientation held is the same constraint.
 #include "Joint.h"
+#include "JointRowsInline.h"
 
 #include "RigidBody.h"
 #include "iSliderJoint.h"

@@ -15,6 +15,7 @@
 // velocity pass, within +-maxForce h. Given as a frequency f and ratio z, k = m w^2 and c = 2 m z w (Box2D's
 // b2LinearStiffness).
 #include "Joint.h"
+#include "JointRowsInline.h"
 
 #include "iSpring.h"
 #include "iUtilities.h"

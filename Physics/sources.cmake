@@ -54,6 +54,7 @@ set(GUARDIAN_PHYSICS_HEADERS
   Integrators.h
   Joint.h
   JointRows.h
+  JointRowsInline.h
   MathBridge.h
   PhysicsScene.h
   RigidBody.h
