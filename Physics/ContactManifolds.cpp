@@ -260,6 +260,22 @@ void ContactSolver::carryOver(const SolverBodyAccess& access) {
 // The old point at the same place on body a gives each point of m its impulses (warm starting).
 void ContactSolver::matchImpulses(const Manifold& old, Manifold& m) const {
     const Real best0 = m_settings.matchDistance * m_settings.matchDistance;
+    // Tangent bases are a function of the normal's bits alone, and a pair's points mostly share one normal
+    // (last step's one, this step's another): each is built once for the run of points that share it (a box
+    // pair's face contact built eight for two normals).
+    struct KnownBasis {
+        Vec3 normal, t[2];
+        bool known = false;
+        void of(const Vec3& n, Vec3 out[2]) {
+            if (!known || std::memcmp(normal.data(), n.data(), sizeof(n)) != 0) {
+                tangentBasis(n, t);
+                normal = n;
+                known = true;
+            }
+            out[0] = t[0];
+            out[1] = t[1];
+        }
+    } oldBasis, newBasis;
     for (int i = 0; i < m.count; ++i) {
         ManifoldPoint& p = m.points[i];
         // The old point at the same place on body a.
@@ -278,13 +294,8 @@ void ContactSolver::matchImpulses(const Manifold& old, Manifold& m) const {
         p.normalImpulse = match->normalImpulse;
         // The old friction impulse, in the new point's tangent basis (each basis is its normal's).
         Vec3 was[2], now[2];
-        tangentBasis(match->normal, was);
-        if (std::memcmp(p.normal.data(), match->normal.data(), sizeof(p.normal)) == 0) { // (bit for bit)
-            now[0] = was[0];
-            now[1] = was[1];
-        } else {
-            tangentBasis(p.normal, now);
-        }
+        oldBasis.of(match->normal, was);
+        newBasis.of(p.normal, now);
         const Vec3 friction = was[0] * match->tangentImpulse[0] + was[1] * match->tangentImpulse[1];
         p.tangentImpulse[0] = friction.dot(now[0]);
         p.tangentImpulse[1] = friction.dot(now[1]);
