@@ -2,7 +2,8 @@
 // their rows with: for the files that solve joints. Apart from JointRows.h because Eigen's expression
 // templates in them, instantiated in every file that includes it, cost about 0.7 s of compile time a file,
 // and most files that reach JointRows.h (through ContactSolver.h and PhysicsScene.h) need only its layouts
-// (a declared inline member used without this header fails to compile, so none is missed).
+// (a member declared inline and used without this header is a compiler warning, an error in our builds, and
+// fails to link: none is missed).
 #pragma once
 
 #include "JointRows.h"
