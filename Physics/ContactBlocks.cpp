@@ -281,7 +281,6 @@ void ContactBlocks::loadPoses(const std::vector<SolverBody>& bodies) {
 // world's anchors are world points: its pose is the identity.
 void ContactBlocks::measureGaps(ContactBlock& block, const BlockAnchors& anchors) const {
     const Real *qa4[kLanes], *qb4[kLanes], *oa4[kLanes], *ob4[kLanes];
-    Lanes qwa, qwb;
     for (int l = 0; l < kLanes; ++l) {
         const Pose& a = m_pose[size_t(std::min(block.read[0][l], int(m_pose.size()) - 1))];
         const Pose& b = m_pose[size_t(std::min(block.read[1][l], int(m_pose.size()) - 1))];
@@ -289,9 +288,9 @@ void ContactBlocks::measureGaps(ContactBlock& block, const BlockAnchors& anchors
         qb4[l] = b.q;
         oa4[l] = a.origin;
         ob4[l] = b.origin;
-        qwa.setLane(l, a.q[3]);
-        qwb.setLane(l, b.q[3]);
     }
+    const Lanes qwa = lanesOf([&](int l) { return qa4[l][3]; }),
+                qwb = lanesOf([&](int l) { return qb4[l][3]; });
     const Lanes3 qa = gatherRows(qa4), qb = gatherRows(qb4), oa = gatherRows(oa4), ob = gatherRows(ob4);
     for (int i = 0; i < block.points; ++i) {
         BlockPoint& q = block.p[i];

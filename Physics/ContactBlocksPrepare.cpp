@@ -15,39 +15,29 @@ namespace {
 struct Lanes33 {
     Lanes3 row[3];
 };
-Lanes33 gatherMatrices(const Mat3* m[kLanes]) {
+GUARDIAN_ALWAYS_INLINE Lanes33 gatherMatrices(const Mat3* m[kLanes]) {
     Lanes33 out;
-    for (int l = 0; l < kLanes; ++l)
-        for (int i = 0; i < 3; ++i) {
-            out.row[i].x.setLane(l, (*m[l])(i, 0));
-            out.row[i].y.setLane(l, (*m[l])(i, 1));
-            out.row[i].z.setLane(l, (*m[l])(i, 2));
-        }
+    for (int i = 0; i < 3; ++i)
+        out.row[i] = Lanes3{lanesOf([&](int l) { return (*m[l])(i, 0); }),
+                            lanesOf([&](int l) { return (*m[l])(i, 1); }),
+                            lanesOf([&](int l) { return (*m[l])(i, 2); })};
     return out;
 }
 Lanes3 timesLanes(const Lanes33& m, const Lanes3& v) {
     return {dot(m.row[0], v), dot(m.row[1], v), dot(m.row[2], v)};
 }
-Lanes3 gatherVectors(const Vec3* v[kLanes]) {
-    Lanes3 out;
-    for (int l = 0; l < kLanes; ++l) setLanes3(out, l, *v[l]);
-    return out;
+GUARDIAN_ALWAYS_INLINE Lanes3 gatherVectors(const Vec3* v[kLanes]) {
+    return {lanesOf([&](int l) { return v[l]->x(); }), lanesOf([&](int l) { return v[l]->y(); }),
+            lanesOf([&](int l) { return v[l]->z(); })};
 }
 // The lanes' bodies' factors L (BodyFactor), and L^T a.
 struct LanesFactor {
     Lanes l00, l10, l11, l20, l21, l22;
 };
-LanesFactor gatherFactors(const BodyFactor* f[kLanes]) {
-    LanesFactor out;
-    for (int l = 0; l < kLanes; ++l) {
-        out.l00.setLane(l, f[l]->l00);
-        out.l10.setLane(l, f[l]->l10);
-        out.l11.setLane(l, f[l]->l11);
-        out.l20.setLane(l, f[l]->l20);
-        out.l21.setLane(l, f[l]->l21);
-        out.l22.setLane(l, f[l]->l22);
-    }
-    return out;
+GUARDIAN_ALWAYS_INLINE LanesFactor gatherFactors(const BodyFactor* f[kLanes]) {
+    return {lanesOf([&](int l) { return f[l]->l00; }), lanesOf([&](int l) { return f[l]->l10; }),
+            lanesOf([&](int l) { return f[l]->l11; }), lanesOf([&](int l) { return f[l]->l20; }),
+            lanesOf([&](int l) { return f[l]->l21; }), lanesOf([&](int l) { return f[l]->l22; })};
 }
 Lanes3 transposedTimes(const LanesFactor& f, const Lanes3& a) {
     return {f.l00 * a.x + (f.l10 * a.y + f.l20 * a.z), f.l11 * a.y + f.l21 * a.z, f.l22 * a.z};
@@ -97,19 +87,18 @@ void ContactBlocks::prepare(std::vector<Manifold>& manifolds, const std::vector<
         for (int i = 0; i < block.points; ++i) {
             const Vec3 *point[kLanes], *dirs[3][kLanes];
             Vec3 tangents[kLanes][2]; // (made here, not kept with the points: the manifolds stream faster)
-            Lanes presence;           // 1 in the lanes whose manifold has this point
+            bool here[kLanes];        // the lanes whose manifold has this point
             for (int l = 0; l < kLanes; ++l) {
                 const int k = block.manifold[l];
-                const bool here = k >= 0 && i < manifolds[size_t(k)].count;
-                const ManifoldPoint* p = here ? &manifolds[size_t(k)].points[i] : nullptr;
+                here[l] = k >= 0 && i < manifolds[size_t(k)].count;
+                const ManifoldPoint* p = here[l] ? &manifolds[size_t(k)].points[i] : nullptr;
                 point[l] = p ? &p->point : &zeroVector;
                 dirs[0][l] = p ? &p->normal : &zeroVector;
                 if (p && block.friction) tangentBasis(p->normal, tangents[l]);
                 dirs[1][l] = p ? &tangents[l][0] : &zeroVector;
                 dirs[2][l] = p ? &tangents[l][1] : &zeroVector;
-                if (here) presence.setLane(l, 1);
             }
-            const LaneMask present = less(zero, presence);
+            const LaneMask present = less(zero, lanesOf([&](int l) { return here[l] ? Real(1) : Real(0); }));
             const Lanes3 at = gatherVectors(point);
             const Lanes3 rA = at - comA, rB = at - comB;
             BlockPoint& q = block.p[i];

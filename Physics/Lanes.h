@@ -127,6 +127,22 @@ inline Lanes select(LaneMask where, Lanes yes, Lanes no) {
 
 #endif
 
+// The Lanes whose lane l is f(l), made in registers. Written a lane at a time into a Lanes' floats and then
+// read as one register, the read waits for the writes to reach the cache (narrow stores cannot be forwarded
+// to a wider load): preparing the rows waited so on every vector it gathered (half its samples in perf; a
+// two-body step 1 % faster without).
+template <class F> GUARDIAN_ALWAYS_INLINE Lanes lanesOf(F f) {
+#if GUARDIAN_AVX_LANES
+    return Lanes(_mm256_setr_ps(f(0), f(1), f(2), f(3), f(4), f(5), f(6), f(7)));
+#elif GUARDIAN_SSE_LANES
+    return Lanes(_mm_setr_ps(f(0), f(1), f(2), f(3)));
+#else
+    Lanes r;
+    for (int i = 0; i < kLanes; ++i) r.v[i] = f(i);
+    return r;
+#endif
+}
+
 // std::clamp(x, lo, hi) lane by lane (x < lo ? lo : hi < x ? hi : x).
 inline Lanes clampOf(Lanes x, Lanes lo, Lanes hi) {
     return select(less(x, lo), lo, select(less(hi, x), hi, x));
