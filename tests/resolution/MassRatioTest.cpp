@@ -58,6 +58,31 @@ TEST(MassRatio, HeavyOnLightHoldsFromEveryStartAtTheDefaultIterations) {
     }
 }
 
+// The 5 s above are not the whole story: kept awake (sleeping off, or an island something keeps moving) the
+// pair walks, the heavy box sideways on the light one (README Known limits: 1:10^3 about 0.1 m in 40 s and
+// off the light box within 160 s, 1:10^4 off within 20 s, from the centred start). At the defaults the pair
+// falls asleep first and stays: from eight starts, 1:10^3 and 1:10^4 at the default 4 iterations with
+// sleeping on, the heavy box within 2 cm of its resting place for a minute (measured 2.7-10.6 mm) and both
+// boxes asleep at its end.
+TEST(MassRatio, HeavyOnLightAtTheDefaultsFallsAsleepAndStaysForAMinute) {
+    for (float ratio : {1000.0f, 10000.0f})
+        for (unsigned start = 0; start < 8; ++start) {
+            SceneFixture f(4); // sleeping on: the default
+            f.world->ground();
+            f.world->box(Vector(0, 0.5f, 0), Vector(0.5f, 0.5f, 0.5f), 1.0f);
+            RBDynamics* heavy =
+                f.world->box(Vector(0, 1.5f, 0), Vector(0.5f, 0.5f, 0.5f), ratio)->getDynamics();
+            if (start > 0) jitterStart(*f.world, start);
+            float worst = 0;
+            f.seconds(60.0f,
+                      [&] { worst = std::max(worst, (heavy->position - Vector(0, 1.5f, 0)).length()); });
+            EXPECT_LT(worst, 0.02f) << "1:" << ratio << ", start " << start;
+            EXPECT_EQ(statsOf(f.scene)->getAwakeBodyCount(), 0u) << "1:" << ratio << ", start " << start;
+            std::printf("[ measured ] 1:%g start %u: strayed %.2f mm in 60 s, awake %zu\n", ratio, start,
+                        1000 * worst, statsOf(f.scene)->getAwakeBodyCount());
+        }
+}
+
 TEST(MassRatio, TenTonnesOnOneKilogramHoldsAtSixteenIterations) {
     // 1:10^4 at 16 iterations: the median of five starts within 5 cm for 5 s (before: 1.0 m at every count up
     // to 64 without shock propagation; 8-196 mm over eight starts before the load-following stiffness; 6-20
