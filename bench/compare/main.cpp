@@ -59,6 +59,7 @@ struct Result {
     Accuracy acc;      // at the end
     double extra = 0;  // top drift, or how far the heavy box ended below its resting height (m)
     double extra2 = 0; // the heavy box's deepest sink during the run (m)
+    double extra3 = 0; // how far the heavy box ended sideways of where it started (m): a stack that walks
 };
 
 struct Summary {
@@ -85,7 +86,10 @@ Result runOnce(const Engine& e, const Row& row, const SimOptions& options) {
     std::vector<BodyState> end = readAll(*sim);
     r.acc = measure(row.scene, end);
     if (row.extra == Extra::TopDrift) r.extra = distance(start.pose.p, end[last].pose.p);
-    if (row.extra == Extra::Sink) r.extra = rest - end[last].pose.p[1];
+    if (row.extra == Extra::Sink) {
+        r.extra = rest - end[last].pose.p[1];
+        r.extra3 = std::hypot(end[last].pose.p[0] - start.pose.p[0], end[last].pose.p[2] - start.pose.p[2]);
+    }
     return r;
 }
 
@@ -95,7 +99,7 @@ double median(std::vector<double> v) {
 }
 
 const char* extraLabel(Extra x) {
-    return x == Extra::TopDrift ? "top drift mm" : x == Extra::Sink ? "sink end / max mm" : "";
+    return x == Extra::TopDrift ? "top drift mm" : x == Extra::Sink ? "sink end / max, sideways mm" : "";
 }
 
 // The pyramid's top drift is chaotic: started 1 um apart, one build drifted 9.6 to 31.6 mm in 10 s. A drift
@@ -139,7 +143,8 @@ Summary runRow(const std::vector<Engine>& engines, const Row& row) {
                     1000 * r.acc.groundPenetration, 1000 * r.acc.pairPenetration,
                     1000 * r.acc.groundPenetration99, 1000 * r.acc.pairPenetration99, r.acc.moving);
         if (row.extra == Extra::TopDrift) std::printf("  %.1f", 1000 * r.extra);
-        if (row.extra == Extra::Sink) std::printf("  %.1f / %.1f", 1000 * r.extra, 1000 * r.extra2);
+        if (row.extra == Extra::Sink)
+            std::printf("  %.1f / %.1f, %.1f", 1000 * r.extra, 1000 * r.extra2, 1000 * r.extra3);
         std::printf("\n");
     }
     std::printf("  time ratio Guardian/Bullet %.2f, Guardian/ODE %.2f\n", sum.r[0].ms / sum.r[1].ms,
