@@ -122,7 +122,6 @@ Summary runRow(const std::vector<Engine>& engines, const Row& row) {
     std::printf("\n== %s (%zu bodies, %d steps = %.1f s, %d rep%s, sleeping %s)\n", row.name.c_str(),
                 row.scene.bodies.size(), row.steps, row.steps * kDt, row.reps,
                 row.reps > 1 ? "s, median" : "", row.options.sleeping ? "on" : "off");
-    std::vector<double> ms[3];
     Summary sum;
     sum.name = row.name;
     std::vector<Result> runs[3];
@@ -130,20 +129,19 @@ Summary runRow(const std::vector<Engine>& engines, const Row& row) {
         const Row run = repetition(row, rep);
         for (size_t e = 0; e < engines.size(); ++e) {
             runs[e].push_back(runOnce(engines[e], run, row.options));
-            ms[e].push_back(runs[e].back().ms);
         }
     }
     std::printf("  %-9s %9s %15s %13s %9s %9s %7s  %s\n", "engine", "ms/step", "ground pen mm", "pair pen mm",
                 "ground 99", "pair 99", "moving", extraLabel(row.extra));
     for (size_t e = 0; e < engines.size(); ++e) {
         Result& r = sum.r[e];
-        r.ms = median(ms[e]);
         // Each figure's median over the starts (not one start's set).
         auto med = [&](auto field) {
             std::vector<double> v;
             for (const Result& x : runs[e]) v.push_back(double(field(x)));
             return median(v);
         };
+        r.ms = med([](const Result& x) { return x.ms; });
         r.acc.groundPenetration = med([](const Result& x) { return x.acc.groundPenetration; });
         r.acc.pairPenetration = med([](const Result& x) { return x.acc.pairPenetration; });
         r.acc.groundPenetration99 = med([](const Result& x) { return x.acc.groundPenetration99; });
