@@ -17,13 +17,13 @@ struct BlockVelocity {
 };
 
 // The relative speed of b against a along a row (sumOfDots' order).
-inline Lanes rowSpeed(const BlockRow& r, const BlockVelocity& u) {
+GUARDIAN_ALWAYS_INLINE Lanes rowSpeed(const BlockRow& r, const BlockVelocity& u) {
     return (dot(r.dir, u.vb - u.va) + dot(r.armB, u.wb)) - dot(r.armA, u.wa);
 }
 
 // An impulse along a row: on b, and its opposite on a (the spins scaled: BodyFactor).
-inline void applyRow(const BlockRow& r, const Lanes& ima, const Lanes& imb, const Lanes& impulse,
-                     BlockVelocity& u) {
+GUARDIAN_ALWAYS_INLINE void applyRow(const BlockRow& r, const Lanes& ima, const Lanes& imb,
+                                     const Lanes& impulse, BlockVelocity& u) {
     u.va = u.va - (ima * impulse) * r.dir;
     u.wa = u.wa - impulse * r.armA;
     u.vb = u.vb + (imb * impulse) * r.dir;

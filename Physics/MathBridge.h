@@ -5,8 +5,8 @@
 // Eigen quaternion represents. Inertia tensors are symmetric, so they need no transpose.
 //
 // Real is the simulator's scalar: float, or double when built with GUARDIAN_DOUBLE (CMake option
-// GUARDIAN_DOUBLE, README-proposal-double.md). The public types (Vector, Matrix, RBDynamics) stay float; in a
-// double build each body keeps its own pose and velocities in Real between steps (RigidBody.h) and the
+// GUARDIAN_DOUBLE, README.md (Double precision)). The public types (Vector, Matrix, RBDynamics) stay float;
+// in a double build each body keeps its own pose and velocities in Real between steps (RigidBody.h) and the
 // conversions below round only at those edges. With float the casts are no-ops: the same code, the same bits.
 #pragma once
 

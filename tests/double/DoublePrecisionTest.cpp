@@ -2,7 +2,7 @@
 // 1 cm/s far from the origin goes v t (within 1 % at 1 km, 10 % at 10 km), and a projectile 10 km out keeps
 // to its parabola within 2 mm. The float build fails each: it rolls 46 % too far at 1 km and not at all at
 // 10 km (a step's 0.17 mm is under half the float spacing there), and its projectile strays 4 cm
-// (precision_report measures both builds; README-proposal-double.md).
+// (precision_report measures both builds; README.md (Double precision)).
 #include "PrecisionScenes.h"
 
 #include <gtest/gtest.h>
@@ -24,7 +24,7 @@ TEST(DoublePrecision, ASlowRollOneKilometreOutGoesVTimesTWithinOnePercent) {
 }
 
 // Not 1 % at 10 km (measured 5 %): the contacts come from the float collision space, and while the ball
-// moves its speed wanders by up to 7 % (README-proposal-double.md); at rest it does not.
+// moves its speed wanders by up to 7 % (README.md (Double precision)); at rest it does not.
 TEST(DoublePrecision, ASlowRollTenKilometresOutGoesVTimesTWithinTenPercent) {
     EXPECT_NEAR(slowRoll(1e4f, 0.01f, 60.0), 1.0, 0.1);
 }

@@ -1,6 +1,6 @@
 // PrecisionReport.cpp - prints the precision scenes' measurements (PrecisionScenes.h) for the library it is
 // linked with; built twice, precision_report (float) and precision_report_double, and run back to back by
-// scripts/precision.sh for README-proposal-double.md's table.
+// scripts/precision.sh for README.md (Double precision)'s table.
 #include "PrecisionScenes.h"
 
 #include <cstdio>

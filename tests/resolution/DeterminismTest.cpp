@@ -36,8 +36,14 @@ unsigned long long boxPile() {
 
 // The committed results: g++ and clang++ (x86-64, Debian 12) agree, in every build type: SSE2 arithmetic,
 // no FMA contraction (-ffp-contract=off), and scene code that draws its random numbers in a stated order.
+// The double build (GUARDIAN_DOUBLE, tests/double) has its own.
+#if defined(GUARDIAN_DOUBLE) && GUARDIAN_DOUBLE
+constexpr unsigned long long kShootingHash = 0x5482ddff491a7c16ull;
+constexpr unsigned long long kBoxPileHash = 0x47e218ee5ff362c3ull;
+#else
 constexpr unsigned long long kShootingHash = 0x58afd2d1bdff73eaull;
 constexpr unsigned long long kBoxPileHash = 0x673d06ce185c4bb0ull;
+#endif
 
 } // namespace
 
