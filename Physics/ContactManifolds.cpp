@@ -38,7 +38,7 @@ void fetchAhead(const CollisionContact* contacts, size_t count, size_t i) {
     auto body = [](iCollisionGeometry* g) { return g ? g->getRigidBody() : nullptr; };
     if (startsPair(i + kBody))
         for (iCollisionGeometry* g : {contacts[i + kBody].g1, contacts[i + kBody].g2})
-            if (iRigidBody* rb = body(g)) prefetchLines(rb, 64);
+            if (iRigidBody* rb = body(g)) prefetchLines(rb, 128); // (the start pose on the second line)
     if (startsPair(i + kDynamics))
         for (iCollisionGeometry* g : {contacts[i + kDynamics].g1, contacts[i + kDynamics].g2})
             if (iRigidBody* rb = body(g)) prefetchLines(&rb->getDynamics(), 256);

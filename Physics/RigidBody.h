@@ -142,6 +142,14 @@ public:
     // path: the continuous stage sweeps from the start pose moved by it).
     Vector projectedBy;
 
+private:
+    // The start pose (recordPreviousPose), on the body's second cache line: the contact solver's entry of a
+    // body reads it with the first, in contact order, which at 10,000 bodies is random in memory (fetched
+    // ahead of it with the first: ContactManifolds.cpp).
+    Quat m_prevRotation = Quat::Identity();
+    Vec3 m_startPosition = Vec3::Zero();
+
+public:
     // The world pose of this body's COM and its world orientation. While a PoseCache is alive each body's is
     // computed once, from its parent's (O(1) a body, where RBDynamics::getWorldPosition is O(depth)): the
     // scene opens one around the loops that read every body's pose and run no game code (WorldPoseCache.cpp).
@@ -275,8 +283,6 @@ private:
     mutable Vector m_worldPos;
     mutable Matrix m_worldRot = Matrix(1);
     Vector m_prevPosition, m_stepPosition;
-    Quat m_prevRotation = Quat::Identity();
-    Vec3 m_startPosition = Vec3::Zero();
     static Vec3 ownOr(const Vector& field, const Vector& written, const Vec3& value) {
         return field == written ? value : toEigen(field);
     }
