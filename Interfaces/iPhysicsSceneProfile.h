@@ -4,8 +4,9 @@
 // Not part of the seed's iPhysicsScene (a game's stand-in scene need not implement it); the scene made by
 // CreatePhysicsScene does, reached with profileOf(scene). Times are wall-clock seconds summed over the
 // update's steps: the update timed by std::chrono's steady clock, its phases by the CPU's time-stamp counter
-// where it has one (x86), each phase its share of the update's time. Reading them costs nothing, taking them
-// about 0.1 us a step (0.3 us with the steady clock read for every phase).
+// where it has one (x86), each phase its share of the update's time. Reading them costs nothing; taking them
+// costs about 0.15 us a step (a two-body step measured 0.18 us faster than with the steady clock read for
+// every phase, which took 0.3 us).
 #pragma once
 
 #include <cstddef>

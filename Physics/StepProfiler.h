@@ -37,7 +37,8 @@ public:
     // The ticks since the last reading go to phase (turned into seconds by endUpdate).
     void lap(Phase phase) {
         const std::uint64_t now = ticks();
-        m_current.*phase += double(now - m_last);
+        // (A thread moved to a core whose counter is behind: nothing, rather than 2^64 ticks.)
+        m_current.*phase += now > m_last ? double(now - m_last) : 0.0;
         m_last = now;
     }
     // The counts at the end of the update's steps.
