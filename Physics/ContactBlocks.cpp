@@ -364,23 +364,43 @@ void ContactBlocks::solve(const std::vector<SolverBody>& bodies, const Sweep& sw
         }
         Velocity* u = m_velocity.data();
         BlockVelocity vel = gatherBlock(block, u);
-        // soft: the push out's soft rows; otherwise every row is rigid (mass scale 1, impulse scale 0: the
-        // same bits without those two products, as the impulses are finite and never -0).
-        // The push out's normal impulses are BlockPoint::pushed, started from the solved ones (which stay).
-        auto solveNormal = [&](auto soft) {
-            for (int i = 0; i < block.points; ++i) {
-                BlockPoint& q = block.p[i];
-                Lanes& impulse = decltype(soft)::value ? q.pushed : q.impulse[0];
-                const Lanes vn = rowSpeed(q.row[0], vel);
-                Lanes change;
-                if constexpr (decltype(soft)::value)
-                    change = (-q.row[0].mass) * massScale[i] * (vn + bias[i]) - impulseScale[i] * impulse;
-                else
-                    change = (-q.row[0].mass) * (vn + bias[i]);
-                const Lanes total = maxOf(zero, impulse + change); // push only, never pull
-                applyRow(q.row[0], block.invMassA, block.invMassB, total - impulse, vel);
-                impulse = total;
-                q.maxNormal = maxOf(q.maxNormal, total);
+        // The normal rows' Gauss-Seidel passes, worked in the rows' speeds: each point's normal speed is
+        // found once, each impulse change moves every point's speed by the block's coupling (ContactBlock),
+        // and the impulses' net change reaches the bodies at the end, a row at a time. The same sweep as
+        // applying each change to the velocities and reading the next row's speed from them (up to rounding),
+        // but a row no longer waits on the one before through the bodies' twelve velocity components: a
+        // two-body step 11.15 -> 10.3 us, the awake 210-box pyramid 1.044 -> 0.964 ms a step. soft: the push
+        // out's soft rows; otherwise every row is rigid (mass scale 1, impulse scale 0: no need for those two
+        // products, as the impulses are finite and never -0). The push out's normal impulses are
+        // BlockPoint::pushed, started from the solved ones (which stay).
+        auto solveNormal = [&](auto soft, int passes) {
+            const int n = block.points;
+            Lanes speed[4], start[4];
+            for (int i = 0; i < n; ++i) {
+                const BlockPoint& q = block.p[i];
+                speed[i] = rowSpeed(q.row[0], vel);
+                start[i] = decltype(soft)::value ? q.pushed : q.impulse[0];
+            }
+            for (int pass = 0; pass < passes; ++pass)
+                for (int i = 0; i < n; ++i) {
+                    BlockPoint& q = block.p[i];
+                    Lanes& impulse = decltype(soft)::value ? q.pushed : q.impulse[0];
+                    Lanes change;
+                    if constexpr (decltype(soft)::value)
+                        change = (-q.row[0].mass) * massScale[i] * (speed[i] + bias[i]) -
+                                 impulseScale[i] * impulse;
+                    else
+                        change = (-q.row[0].mass) * (speed[i] + bias[i]);
+                    const Lanes total = maxOf(zero, impulse + change); // push only, never pull
+                    const Lanes delta = total - impulse;
+                    impulse = total;
+                    q.maxNormal = maxOf(q.maxNormal, total);
+                    for (int j = 0; j < n; ++j) speed[j] = speed[j] + block.couplingOf(j, i) * delta;
+                }
+            for (int i = 0; i < n; ++i) {
+                const BlockPoint& q = block.p[i];
+                applyRow(q.row[0], block.invMassA, block.invMassB,
+                         (decltype(soft)::value ? q.pushed : q.impulse[0]) - start[i], vel);
             }
         };
         // The relax starts from velocities this sub-step solved already: one normal pass before friction. The
@@ -389,11 +409,9 @@ void ContactBlocks::solve(const std::vector<SolverBody>& bodies, const Sweep& sw
         // sub-step. Measurements for both: ContactSolver.cpp, before solveContacts.
         if (sweep.pass == Pass::PushOut) {
             for (int i = 0; i < block.points; ++i) block.p[i].pushed = block.p[i].impulse[0];
-            solveNormal(std::true_type{});
-            solveNormal(std::true_type{});
+            solveNormal(std::true_type{}, 2);
         } else {
-            solveNormal(std::false_type{});
-            if (sweep.pass == Pass::Velocity) solveNormal(std::false_type{});
+            solveNormal(std::false_type{}, sweep.pass == Pass::Velocity ? 2 : 1);
             if (block.friction)
                 for (int i = 0; i < block.points; ++i) {
                     BlockPoint& q = block.p[i];
@@ -405,7 +423,7 @@ void ContactBlocks::solve(const std::vector<SolverBody>& bodies, const Sweep& sw
                         q.impulse[r] = total;
                     }
                 }
-            solveNormal(std::false_type{});
+            solveNormal(std::false_type{}, 1);
         }
         scatterBlock(block, vel, u);
     }

@@ -70,6 +70,14 @@ struct ContactBlock {
     int points = 0;       // the most points of any lane
     bool friction = false;
     Lanes invMassA, invMassB, frictionCoefficient, biasRate, massScale, impulseScale;
+    // How much a unit impulse along point j's normal row changes point i's normal speed (the normal rows'
+    // Delassus matrix, symmetric: 1/m_a + 1/m_b times n_i . n_j plus the arms' products), made with the rows
+    // (ContactBlocks::prepare): the sweeps solve the normal rows in their speeds (ContactBlocks::solve).
+    Lanes coupling[6], diagonal[4]; // (0,1) (0,2) (0,3) (1,2) (1,3) (2,3); (i,i)
+    static int pairIndex(int i, int j) { return i == 0 ? j - 1 : i == 1 ? j + 1 : 5; } // i < j
+    const Lanes& couplingOf(int i, int j) const {
+        return i == j ? diagonal[i] : coupling[i < j ? pairIndex(i, j) : pairIndex(j, i)];
+    }
     BlockPoint p[4];
 };
 
@@ -144,6 +152,7 @@ private:
         return Vec3(v.x.lane(lane), v.y.lane(lane), v.z.lane(lane));
     }
     void measureGaps(ContactBlock& block, const BlockAnchors& anchors) const;
+    static void prepareCoupling(ContactBlock& block); // its points' coupling, from their normal rows
 
     struct alignas(16) Velocity {
         Real v[4], w[4];

@@ -135,6 +135,20 @@ void ContactBlocks::prepare(std::vector<Manifold>& manifolds, const std::vector<
                 if (mass > 0.0f) m.load = std::max(m.load, p.normalImpulse / (h * mass));
             }
         }
+        prepareCoupling(block);
+    }
+}
+
+void ContactBlocks::prepareCoupling(ContactBlock& block) {
+    const Lanes baseK = block.invMassA + block.invMassB;
+    for (int i = 0; i < block.points; ++i) {
+        const BlockRow& a = block.p[i].row[0];
+        block.diagonal[i] = (baseK * dot(a.dir, a.dir) + dot(a.armA, a.armA)) + dot(a.armB, a.armB);
+        for (int j = i + 1; j < block.points; ++j) {
+            const BlockRow& b = block.p[j].row[0];
+            block.coupling[ContactBlock::pairIndex(i, j)] =
+                (baseK * dot(a.dir, b.dir) + dot(a.armA, b.armA)) + dot(a.armB, b.armB);
+        }
     }
 }
 

@@ -280,8 +280,12 @@ TEST(JointScenes, RagdollJointsStayWithinTheKnownBoundAtEveryStep) {
 // and 13.7 cm apart, 3.2 and 8.6 cm below. Asserted: those measured bounds, with room for the spread
 // (compilers differ here: a different rounding anywhere lands a ragdoll another way). The lowest corner of
 // the worst start is a tail: over starts 1 to 60 the worst was 8.7 cm (g++) and 6.4 cm (clang AVX) before
-// 4ba9f54, 9.4 and 8.5 cm after it (the medians 3.1-3.4 cm throughout), and 4ba9f54's clang AVX build has
-// its 8.5 cm among the twelve: the worst is held to 10 cm.
+// 4ba9f54, 9.4 and 8.5 cm after it (the medians 3.1-3.4 cm throughout). With the normal rows solved in
+// their speeds (ContactBlocks::solve; same sweep, other rounding) start 5 sinks a corner 13.2 cm on g++ (8.5
+// on clang AVX), and over the 60 starts the two solves are alike: medians 3.4 cm with it and 3.3 before, the
+// speed form deeper in 21 of 60 paired starts (rank test z = -0.5), the next worst 8.7 / 7.4 cm with it and
+// 7.4 / 6.5 before. The worst of twelve is a draw from that tail: held to 15 cm. Anchors over the 60:
+// median 1.2 cm, worst 3.7 (g++) and 5.4 cm (clang AVX); the twelve's worst 2.9 and 3.3.
 namespace {
 int gThrowSeed = 0;
 void buildThrownRagdoll(World& w) {
@@ -321,7 +325,7 @@ TEST(JointScenes, RagdollThrownFromTwelveStartsKeepsItsJointsWithinTheKnownBound
     EXPECT_LT(0.5f * (g[5] + g[6]), 0.02f);
     EXPECT_LT(g.back(), 0.04f);
     EXPECT_GT(0.5f * (l[5] + l[6]), -0.045f);
-    EXPECT_GT(l.front(), -0.10f);
+    EXPECT_GT(l.front(), -0.15f);
 }
 
 // The wrecking ball (500 kg on ten 0.5 kg links, let go 60 degrees out) swings through the wall of boxes at
