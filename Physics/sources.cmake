@@ -18,6 +18,7 @@ set(GUARDIAN_PHYSICS_SOURCES
   Composite.cpp
   FrameDriver.cpp
   ContactBlocks.cpp
+  ContactBlocksSweeps.cpp
   ContactBlocksPrepare.cpp
   ContactManifolds.cpp
   ContactResolution.cpp
