@@ -134,6 +134,9 @@ public:
     // A manifold's point's normal row as prepare() made it (restitution and shock propagation use it; kept
     // here rather than copied into every manifold's points, which a step passes over several times).
     NormalRow normalRow(const Manifold& m, int point) const;
+    // How much a unit impulse along a manifold's point j's normal changes its point i's normal speed, as
+    // prepare() made it (ContactBlock's coupling).
+    Real coupling(const Manifold& m, int i, int j) const { return at(m).couplingOf(i, j).lane(m.lane); }
     // A manifold's point's gap as the last sweep that measured gaps found it (ContactBlocks::Sweep).
     Real gap(const Manifold& m, int point) const { return at(m).p[point].gap.lane(m.lane); }
     // The impulses back into the manifolds.
