@@ -166,7 +166,7 @@ void ContactBlocks::openNew(int zero, int scratch) {
             *x = Lanes();
         for (BlockPoint& q : block.p) {
             for (Lanes& x : q.impulse) x = Lanes();
-            q.pushed = q.maxNormal = Lanes();
+            q.maxNormal = Lanes();
         }
         m_anchors[m_count] = BlockAnchors();
     }

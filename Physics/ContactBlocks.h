@@ -34,13 +34,14 @@ struct BlockRow {
 };
 
 // What the sweeps read and write of a point. Its anchors are apart (BlockAnchors): only measuring the gaps
-// reads them, and a sweep streams every block through the cache (at 10,000 bodies, from memory).
+// reads them, and a sweep streams every block through the cache (at 10,000 bodies, from memory). (The push
+// out's normal impulses live in its sweep: ContactBlocks::solve.)
 struct BlockPoint {
-    BlockRow row[3];          // the normal and the two tangents
-    Lanes impulse[3], pushed; // accumulated; the normal one through a push out (started from impulse[0])
-    Lanes maxNormal;          // the most it pushed
-    Lanes approach;           // v_n when the solve began
-    Lanes gap;                // separation at the sub-step's poses
+    BlockRow row[3];  // the normal and the two tangents
+    Lanes impulse[3]; // accumulated along the normal and the two tangents
+    Lanes maxNormal;  // the most it pushed
+    Lanes approach;   // v_n when the solve began
+    Lanes gap;        // separation at the sub-step's poses
 };
 
 // A block's points' body-local anchors (the normal is row[0].dir).

@@ -129,20 +129,21 @@ void ContactBlocks::solve(const std::vector<SolverBody>& bodies, const Sweep& sw
         // but a row no longer waits on the one before through the bodies' twelve velocity components: a
         // two-body step 11.15 -> 10.3 us, the awake 210-box pyramid 1.044 -> 0.964 ms a step. soft: the push
         // out's soft rows; otherwise every row is rigid (mass scale 1, impulse scale 0: no need for those two
-        // products, as the impulses are finite and never -0). The push out's normal impulses are
-        // BlockPoint::pushed, started from the solved ones (which stay).
+        // products, as the impulses are finite and never -0). The push out's normal impulses are pushed[],
+        // started from the solved ones (which stay).
+        Lanes pushed[4];
         auto solveNormal = [&](auto soft, int passes) {
             const int n = block.points;
             Lanes speed[4], start[4];
             for (int i = 0; i < n; ++i) {
                 const BlockPoint& q = block.p[i];
                 speed[i] = rowSpeed(q.row[0], vel);
-                start[i] = decltype(soft)::value ? q.pushed : q.impulse[0];
+                start[i] = decltype(soft)::value ? pushed[i] : q.impulse[0];
             }
             for (int pass = 0; pass < passes; ++pass)
                 for (int i = 0; i < n; ++i) {
                     BlockPoint& q = block.p[i];
-                    Lanes& impulse = decltype(soft)::value ? q.pushed : q.impulse[0];
+                    Lanes& impulse = decltype(soft)::value ? pushed[i] : q.impulse[0];
                     Lanes change;
                     if constexpr (decltype(soft)::value)
                         change = (-q.row[0].mass) * massScale[i] * (speed[i] + bias[i]) -
@@ -158,7 +159,7 @@ void ContactBlocks::solve(const std::vector<SolverBody>& bodies, const Sweep& sw
             for (int i = 0; i < n; ++i) {
                 const BlockPoint& q = block.p[i];
                 applyRow(q.row[0], block.invMassA, block.invMassB,
-                         (decltype(soft)::value ? q.pushed : q.impulse[0]) - start[i], vel);
+                         (decltype(soft)::value ? pushed[i] : q.impulse[0]) - start[i], vel);
             }
         };
         // The relax starts from velocities this sub-step solved already: one normal pass before friction. The
@@ -166,7 +167,7 @@ void ContactBlocks::solve(const std::vector<SolverBody>& bodies, const Sweep& sw
         // there (bounded by the load the normal impulse carries) pushed stacked boxes sideways in every
         // sub-step. Measurements for both: ContactSolver.cpp, before solveContacts.
         if (sweep.pass == Pass::PushOut) {
-            for (int i = 0; i < block.points; ++i) block.p[i].pushed = block.p[i].impulse[0];
+            for (int i = 0; i < block.points; ++i) pushed[i] = block.p[i].impulse[0];
             solveNormal(std::true_type{}, 2);
         } else {
             solveNormal(std::false_type{}, sweep.pass == Pass::Velocity ? 2 : 1);
