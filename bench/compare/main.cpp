@@ -3,13 +3,13 @@
 // says asleep. For each row: ms per step of each engine (median over repetitions, building not timed),
 // Guardian's time ratio to each, and accuracy figures computed the same way from every engine's poses
 // (Scene.cpp), each the median over the repetitions' starts 1 um apart (settling is chaotic). Then the
-// broadphase row and the equal-accuracy rows (the awake pyramid at the cheapest setting of each engine's own
-// knob that keeps its top within 5 cm, the median of three such starts; heavy on light 1:1,000 at the
-// cheapest that keeps the heavy box within 1 cm of where it rests). Options: --quick (each row once,
-// fewer steps), --only TEXT (only the rows whose name contains TEXT), --no-ccd (Guardian's continuous
-// collision off: not its default, for finding out what that stage costs and does here).
-// On Linux the process stays on the CPU it started on: every engine's every row on the same core
-// (StayOnThisCpu.h).
+// broadphase row, the landing row (a pile's overlaps while it lands) and the equal-accuracy rows (the awake
+// pyramid at the cheapest setting of each engine's own knob that keeps its top within 5 cm, the median of
+// three such starts; heavy on light 1:1,000 at the cheapest that keeps the heavy box within 1 cm of where it
+// rests). Options: --quick (each row once, fewer steps), --only TEXT (only the rows whose name contains
+// TEXT), --no-ccd (Guardian's continuous collision off: not its default, for finding out what that stage
+// costs and does here). On Linux the process stays on the CPU it started on: every engine's every row on the
+// same core (StayOnThisCpu.h).
 #include "../StayOnThisCpu.h"
 #include "Scene.h"
 
@@ -235,6 +235,28 @@ void broadphaseRow(const std::vector<Engine>& engines, int boxes, int rounds) {
 // The cheapest setting of each engine's own knob (its ladder) at which the row's figure (the pyramid's top
 // drift, the heavy box's sink at the end) is within bound; each setting runs from that many starts
 // (repetition()), its figure and time their medians.
+// A pile while it lands (dropped from up to 15 m, columns of boxes are hit from above): the overlapping
+// pairs' 99th percentile and deepest every 0.5 s, each engine from the same start in turn (not timed). The
+// rows above measure their poses at the end only.
+void landingRow(const std::vector<Engine>& engines, const SimOptions& options, int boxes, int steps) {
+    const SceneDesc scene = boxPileScene(boxes);
+    std::printf("\n== landing: %d boxes dropped into a pile, the overlapping pairs while it lands (99th "
+                "percentile / deepest, mm, every 0.5 s from 0.5 s; one start)\n",
+                boxes);
+    for (const Engine& e : engines) {
+        const std::unique_ptr<Sim> sim = e.sim(scene, options);
+        std::printf("  %-9s", e.info.name.c_str());
+        for (int step = 1; step <= steps; ++step) {
+            sim->step();
+            if (step % 30) continue;
+            const Accuracy a = measure(scene, readAll(*sim));
+            std::printf(" %.0f/%.0f", 1000 * a.pairPenetration99, 1000 * a.pairPenetration);
+        }
+        std::printf("\n");
+        std::fflush(stdout);
+    }
+}
+
 void equalAccuracyRow(const std::vector<Engine>& engines, const Row& row, int starts, double bound,
                       const char* figure) {
     std::printf(
@@ -358,6 +380,8 @@ int main(int argc, char** argv) {
         if (only.empty() || row.name.find(only) != std::string::npos) done.push_back(runRow(engines, row));
     if (only.empty() || std::string("broadphase").find(only) != std::string::npos)
         broadphaseRow(engines, 10000, quick ? 3 : 10);
+    if (only.empty() || std::string("landing").find(only) != std::string::npos)
+        landingRow(engines, awake, 1000, quick ? 120 : 360);
     if (only.empty() || std::string("equal accuracy").find(only) != std::string::npos)
         equalAccuracyRow(engines,
                          {"the awake 210-box pyramid", pyramidScene(20), awake, pile, 1, Extra::TopDrift},
