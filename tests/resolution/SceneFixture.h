@@ -45,6 +45,10 @@ public:
             if (afterEach) afterEach();
         }
     }
+    // Steps taken so far; after restoring a snapshot taken at step n (iSnapshots.h), rewindTo(n) puts the
+    // fixture's clock back with the scene's, so that the steps replayed are given the same times.
+    long stepCount() const { return m_steps; }
+    void rewindTo(long step) { m_steps = step; }
     void seconds(float s, const std::function<void()>& afterEach = nullptr) {
         steps(int(s * 60 + 0.5f), afterEach);
     }

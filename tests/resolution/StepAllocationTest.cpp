@@ -10,7 +10,6 @@
 
 #include <gtest/gtest.h>
 
-#include <cmath>
 #include <cstdio>
 
 using namespace resolution_test;
@@ -48,17 +47,12 @@ TEST(StepAllocation, AFallingPileWithListenersStepsWithoutAllocating) {
     for (int frame = 0; frame < 212; ++frame) f.steps(1, [&] { spec->act(*f.world, frame); });
     iSnapshot* snapshot = snapshotsOf(f.scene)->takeSnapshot();
     ASSERT_NE(snapshot, nullptr);
-    auto run60 = [&] {
-        for (int step = 213; step <= 272; ++step) f.scene->update(int(std::ceil(step * 1000.0 / 60.0)));
-    };
-    const long beforeFirst = guardian_test::allocationCount();
-    run60();
-    const long first = guardian_test::allocationCount() - beforeFirst;
+    const long at = f.stepCount();
+    const long first = allocationsOfWarmSteps(f, 0, 60);
     const unsigned long long state = f.stateHash();
     ASSERT_TRUE(snapshotsOf(f.scene)->restoreSnapshot(snapshot));
-    const long before = guardian_test::allocationCount();
-    run60();
-    const long replayed = guardian_test::allocationCount() - before;
+    f.rewindTo(at);
+    const long replayed = allocationsOfWarmSteps(f, 0, 60);
     snapshot->Delete();
     std::printf("the gallery's 60 steps after the fourth shot: %ld allocations, replayed: %ld\n", first,
                 replayed);
