@@ -232,9 +232,6 @@ void broadphaseRow(const std::vector<Engine>& engines, int boxes, int rounds) {
     std::fflush(stdout);
 }
 
-// The cheapest setting of each engine's own knob (its ladder) at which the row's figure (the pyramid's top
-// drift, the heavy box's sink at the end) is within bound; each setting runs from that many starts
-// (repetition()), its figure and time their medians.
 // A pile while it lands (dropped from up to 15 m, columns of boxes are hit from above): the overlapping
 // pairs' 99th percentile and deepest every 0.5 s, each engine from the same start in turn (not timed). The
 // rows above measure their poses at the end only.
@@ -257,6 +254,9 @@ void landingRow(const std::vector<Engine>& engines, const SimOptions& options, i
     }
 }
 
+// The cheapest setting of each engine's own knob (its ladder) at which the row's figure (the pyramid's top
+// drift, the heavy box's sink at the end) is within bound; each setting runs from that many starts
+// (repetition()), its figure and time their medians.
 void equalAccuracyRow(const std::vector<Engine>& engines, const Row& row, int starts, double bound,
                       const char* figure) {
     std::printf(
